@@ -1,0 +1,75 @@
+#pragma once
+/// @file metrics.hpp
+/// @brief Image error metrics of DESIGN.md: RMSE of tone-mapped images (what the papers report), relative
+/// RMS error of linear radiance over covered pixels, and the largest absolute error.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "tonemap.hpp"
+
+namespace lucent::image {
+
+struct ImageErrors {
+  double rmseToneMapped = 0;  ///< over all pixels and channels, both mapped with the reference's L_avg
+  double relativeRms = 0;     ///< sqrt(sum |a-b|^2 / sum |b|^2) over pixels covered in either image
+  double maxAbsError = 0;     ///< largest per-channel |a-b| of linear radiance
+  std::size_t coveredPixels = 0;
+  std::size_t coverageMismatch = 0;  ///< pixels covered in one image only
+};
+
+inline void requireSameSize(const Image& a, const Image& b) {
+  if (a.width != b.width || a.height != b.height)
+    throw std::invalid_argument("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
+                                " against " + std::to_string(b.width) + "x" + std::to_string(b.height) +
+                                "; render both at the same --width/--height");
+}
+
+/// Errors of display values (already tone-mapped, e.g. read from PNG): RMSE of the values as they are.
+inline ImageErrors compareDisplayImages(const Image& test, const Image& reference) {
+  requireSameSize(test, reference);
+  ImageErrors e;
+  double sq = 0;
+  for (std::size_t i = 0; i < reference.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      const double d = double(test.pixels[i][c]) - double(reference.pixels[i][c]);
+      sq += d * d;
+      e.maxAbsError = std::max(e.maxAbsError, std::abs(d));
+    }
+  e.coveredPixels = reference.pixels.size();
+  e.rmseToneMapped = reference.pixels.empty() ? 0 : std::sqrt(sq / (3.0 * double(reference.pixels.size())));
+  return e;
+}
+
+/// Errors of `test` against `reference`; both must have the same size.
+inline ImageErrors compareImages(const Image& test, const Image& reference, ToneMap toneMap = {}) {
+  requireSameSize(test, reference);
+  ImageErrors e;
+  if (toneMap.kind == ToneMap::Kind::Paper && !(toneMap.averageRadiance > 0))
+    toneMap.averageRadiance = meanCoveredLuminance(reference);
+  const double avg = toneMap.averageRadiance;
+  double sqTone = 0, sqDiff = 0, sqRef = 0;
+  for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
+    const glm::vec4 &a = test.pixels[i], &b = reference.pixels[i];
+    const bool ca = test.covered(i), cb = reference.covered(i);
+    if (ca != cb) ++e.coverageMismatch;
+    for (int c = 0; c < 3; ++c) {
+      const double ta = toneMap.apply(a[c], avg), tb = toneMap.apply(b[c], avg);
+      sqTone += (ta - tb) * (ta - tb);
+      if (ca || cb) {
+        const double d = double(a[c]) - double(b[c]);
+        sqDiff += d * d;
+        sqRef += double(b[c]) * double(b[c]);
+        e.maxAbsError = std::max(e.maxAbsError, std::abs(d));
+      }
+    }
+    if (ca || cb) ++e.coveredPixels;
+  }
+  e.rmseToneMapped = reference.pixels.empty() ? 0 : std::sqrt(sqTone / (3.0 * double(reference.pixels.size())));
+  e.relativeRms = sqRef > 0 ? std::sqrt(sqDiff / sqRef) : (sqDiff > 0 ? std::numeric_limits<double>::infinity() : 0.0);
+  return e;
+}
+
+}  // namespace lucent::image

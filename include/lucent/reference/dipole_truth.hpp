@@ -1,0 +1,176 @@
+#pragma once
+/// @file dipole_truth.hpp
+/// @brief The brute-force dipole truth: irradiance at dense surface samples and the exact Rd sum for every
+/// shaded point, L(xo, wo) = (1/pi) Ft(eta, wo) B(xo), B(xo) = sum_i E_i A_i Rd(|x_i - xo|)
+/// (texture-space-importance-sampling Eq. 2-3). The model truth every dipole technique is measured against.
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <type_traits>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "../image/image.hpp"
+#include "../optics/dipole.hpp"
+#include "../scene/camera.hpp"
+#include "../scene/irradiance.hpp"
+#include "../util/parallel.hpp"
+#include "rd_sum_kernel.hpp"
+#include "surface_samples.hpp"
+
+namespace lucent::reference {
+
+/// Sample spacing for a converged truth: a fraction of the smallest mean free path (where Rd varies
+/// fastest), never coarser than diag/minSamplesPerDiagonal (the geometry and the lighting must be
+/// resolved too), and coarsened if needed to respect a sample budget.
+struct SpacingChoice {
+  double spacing = 0;
+  double meanFreePath = 0;
+  bool budgetLimited = false;  ///< true: the budget forced a spacing coarser than asked for
+};
+
+inline SpacingChoice chooseSpacing(const scene::TriangleMesh& mesh, double minMeanFreePath,
+                                   double fractionOfMeanFreePath = 0.5, std::size_t maxSamples = 2000000,
+                                   double minSamplesPerDiagonal = 64) {
+  SpacingChoice c;
+  c.meanFreePath = minMeanFreePath;
+  const double diag = mesh.bounds().diagonal();
+  c.spacing = std::min(fractionOfMeanFreePath * minMeanFreePath, diag / minSamplesPerDiagonal);
+  while (countSurfaceSamples(mesh, c.spacing) > maxSamples) {
+    c.spacing *= 1.25;
+    c.budgetLimited = true;
+  }
+  return c;
+}
+
+/// @tparam T the scalar Rd is evaluated in; sums are always accumulated in double.
+template <class T>
+class DipoleTruth {
+ public:
+  struct Stats {
+    std::size_t samples = 0;     ///< surface samples
+    std::size_t litSamples = 0;  ///< samples with non-zero irradiance (only these enter the sum)
+    double spacing = 0;          ///< mm
+    glm::dvec3 transmittedPower{0};  ///< sum E_i A_i: the power entering the surface
+  };
+
+  DipoleTruth(const SurfaceSamples& samples, const optics::Dipole<T>& dipole, const std::vector<scene::Light>& lights,
+              const scene::RayCaster& caster, const scene::IrradianceSettings& irr,
+              const util::ParallelFor& parallelFor = util::serialFor, const util::Progress& progress = {})
+      : mDipole(dipole) {
+    mStats.samples = samples.size();
+    mStats.spacing = samples.spacing;
+    std::vector<glm::dvec3> weighted(samples.size());
+    std::atomic<std::size_t> done{0};
+    parallelFor(samples.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+        weighted[i] = scene::irradianceAt(samples.position[i], samples.normal[i], samples.faceNormal[i], lights,
+                                          caster, irr, i) * samples.area[i];
+      if (progress) progress(double(done += end - begin) / double(samples.size()));
+    });
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      const glm::dvec3& w = weighted[i];
+      if (!(w.x > 0 || w.y > 0 || w.z > 0)) continue;
+      mStats.transmittedPower += w;
+      mX.push_back(T(samples.position[i].x));
+      mY.push_back(T(samples.position[i].y));
+      mZ.push_back(T(samples.position[i].z));
+      for (int c = 0; c < 3; ++c) mW[c].push_back(T(w[c]));
+    }
+    mStats.litSamples = mX.size();
+  }
+
+  /// B(xo) = sum_i E_i A_i Rd(|x_i - xo|) (Eq. 3), mm^-2 times the irradiance unit.
+  glm::dvec3 radiosity(const glm::dvec3& xo) const {
+    if constexpr (std::is_same_v<T, float>) return radiosityFloatKernel(xo);  // vectorised, same sum
+    const T ox = T(xo.x), oy = T(xo.y), oz = T(xo.z);
+    double sum[3] = {0, 0, 0};
+    const std::size_t n = mX.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const T dx = mX[i] - ox, dy = mY[i] - oy, dz = mZ[i] - oz;
+      const T r = std::sqrt(dx * dx + dy * dy + dz * dz);
+      for (int c = 0; c < 3; ++c) sum[c] += double(mW[c][i] * mDipole.channel[c].rd(r));
+    }
+    return {sum[0], sum[1], sum[2]};
+  }
+
+  /// L(xo, wo) = (1/pi) Ft(eta, wo) B(xo) (Eq. 2); cosOut = n.wo at xo.
+  glm::dvec3 radiance(const glm::dvec3& xo, double cosOut) const {
+    const double ft = optics::fresnelTransmittance(cosOut, double(mDipole.eta));
+    return radiosity(xo) * (ft / optics::kPi);
+  }
+
+  const Stats& stats() const { return mStats; }
+
+ private:
+  glm::dvec3 radiosityFloatKernel(const glm::dvec3& xo) const {
+    const RdKernelSamples samples{mX.data(), mY.data(), mZ.data(), mW[0].data(), mW[1].data(), mW[2].data(), mX.size()};
+    double out[3];
+    rdSumFloat(samples, mKernel, float(xo.x), float(xo.y), float(xo.z), out);
+    return {out[0], out[1], out[2]};
+  }
+
+  optics::Dipole<T> mDipole;
+  RdKernelConstants mKernel = RdKernelConstants::from(mDipole);
+  std::vector<T> mX, mY, mZ, mW[3];
+  Stats mStats;
+};
+
+/// A point seen by the camera: where, and how it is seen.
+struct ShadingPoint {
+  glm::dvec3 position;
+  double cosOut = 0;  ///< n . (direction to the eye), clamped to [0, 1]
+};
+
+/// The first surface hit through each pixel centre, or nothing (background).
+inline std::vector<std::optional<ShadingPoint>> primaryHits(const scene::PinholeCamera& camera,
+                                                            const scene::TriangleMesh& mesh,
+                                                            const std::vector<glm::vec3>& vertexNormals,
+                                                            const scene::RayCaster& caster,
+                                                            const util::ParallelFor& parallelFor) {
+  std::vector<std::optional<ShadingPoint>> hits(std::size_t(camera.width) * camera.height);
+  parallelFor(hits.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const scene::Ray ray = camera.primaryRay(double(i % camera.width), double(i / camera.width));
+      const auto hit = caster.intersect(ray.origin, ray.direction, 0, std::numeric_limits<double>::infinity());
+      if (!hit) continue;
+      const auto& tri = mesh.triangles[hit->triangle];
+      const double w = 1 - hit->u - hit->v;
+      glm::dvec3 n = w * glm::dvec3(vertexNormals[tri.x]) + hit->u * glm::dvec3(vertexNormals[tri.y]) +
+                     hit->v * glm::dvec3(vertexNormals[tri.z]);
+      const double len = glm::length(n);
+      n = len > 0 ? n / len : glm::normalize(mesh.areaVector(hit->triangle));
+      const double cosOut = std::clamp(-glm::dot(n, ray.direction), 0.0, 1.0);
+      hits[i] = ShadingPoint{ray.origin + hit->t * ray.direction, cosOut};
+    }
+  });
+  return hits;
+}
+
+/// Renders the truth: radiance in RGB, coverage in A.
+template <class T>
+image::Image renderTruth(const DipoleTruth<T>& truth, const scene::PinholeCamera& camera,
+                         const std::vector<std::optional<ShadingPoint>>& hits, const util::ParallelFor& parallelFor,
+                         const util::Progress& progress = {}) {
+  image::Image img(camera.width, camera.height);
+  std::atomic<std::size_t> done{0};
+  const std::size_t rows = std::size_t(camera.height);
+  parallelFor(rows, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t y = begin; y < end; ++y) {
+      for (int x = 0; x < camera.width; ++x) {
+        const auto& hit = hits[y * camera.width + x];
+        if (!hit) continue;
+        const glm::dvec3 l = truth.radiance(hit->position, hit->cosOut);
+        img.at(x, int(y)) = glm::vec4(glm::vec3(l), 1.0f);
+      }
+      if (progress) progress(double(++done) / double(rows));
+    }
+  });
+  return img;
+}
+
+}  // namespace lucent::reference

@@ -1,0 +1,154 @@
+/// `lucent bench`: the accuracy-cost harness. Renders one scene with a reference setting and with every
+/// setting of a knob sweep, measures wall time and memory, computes each image's error against the
+/// reference, and writes a CSV table and a PNG chart of error against time.
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include <lucent/image/metrics.hpp>
+
+#include "../io/atomic_file.hpp"
+#include "../plot/line_chart.hpp"
+#include "../render/methods.hpp"
+#include "../util/error.hpp"
+#include "commands.hpp"
+#include "process_stats.hpp"
+
+namespace lucent::cli {
+
+namespace {
+struct Row {
+  std::string method, knobs;
+  double seconds = 0, memory = 0;
+  std::map<std::string, double> figures;
+  image::ImageErrors errors;
+};
+
+/// "fraction=2,1,0.5" -> ("fraction", {"2","1","0.5"})
+std::pair<std::string, std::vector<std::string>> parseSweep(const Args& args, const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+    args.fail("--sweep '" + text + "' must be KNOB=V1,V2,..., e.g. fraction=2,1,0.5");
+  std::vector<std::string> values;
+  std::stringstream ss(text.substr(eq + 1));
+  std::string v;
+  while (std::getline(ss, v, ',')) values.push_back(v);
+  return {text.substr(0, eq), values};
+}
+
+std::map<std::string, std::string> knobArgs(const Args& args, const std::string& option) {
+  std::map<std::string, std::string> out;
+  for (const auto& k : args.all(option))
+    for (const auto& [name, value] : render::parseKnobList(k)) out[name] = value;
+  return out;
+}
+}  // namespace
+
+int runBench(int argc, char** argv) {
+  std::vector<OptionSpec> specs = sceneOptionSpecs();
+  specs.push_back({"method", "NAME", "method whose knobs are swept (default reference)"});
+  specs.push_back({"knob", "NAME=VALUE", "a fixed knob of the swept method", true});
+  specs.push_back({"sweep", "KNOB=V1,V2,...", "values of one knob; several --sweep give their product (default for reference: fraction=2,1,0.5,0.25)", true});
+  specs.push_back({"reference-method", "NAME", "method of the reference image (default reference)"});
+  specs.push_back({"reference-knob", "NAME=VALUE", "knob of the reference (default for reference: fraction=0.125)", true});
+  specs.push_back({"csv", "FILE", "write the table as CSV"});
+  specs.push_back({"plot", "FILE.png", "chart of error (relative RMS) against time"});
+  specs.push_back({"quiet", "", "no progress bars"});
+  Args args("bench", "lucent bench [scene options] [--method NAME --sweep KNOB=V1,V2,...] [--csv FILE] [--plot FILE.png]", specs);
+  args.parse(argc, argv, 2);
+  if (args.helpRequested()) {
+    std::cout << args.helpText();
+    return 0;
+  }
+  if (!args.positional().empty()) args.fail("unexpected argument '" + args.positional().front() + "'");
+  const render::Method& method = render::findMethod(args.get("method", "reference"));
+  const render::Method& refMethod = render::findMethod(args.get("reference-method", "reference"));
+  std::vector<std::pair<std::string, std::vector<std::string>>> sweeps;
+  for (const auto& s : args.all("sweep")) sweeps.push_back(parseSweep(args, s));
+  if (sweeps.empty()) {
+    if (method.name != "reference") args.fail("give the knob values to sweep with --sweep KNOB=V1,V2,...");
+    sweeps.push_back({"fraction", {"2", "1", "0.5", "0.25"}});
+  }
+  auto refGiven = knobArgs(args, "reference-knob");
+  if (refGiven.empty() && refMethod.name == "reference") refGiven["fraction"] = "0.125";
+  const render::Knobs refKnobs(refMethod.knobs, refGiven, refMethod.name);
+
+  // The product of the sweeps, each combined with the fixed knobs; validated before anything runs.
+  std::vector<render::Knobs> settings;
+  std::vector<std::map<std::string, std::string>> combos{knobArgs(args, "knob")};
+  for (const auto& [name, values] : sweeps) {
+    std::vector<std::map<std::string, std::string>> next;
+    for (const auto& c : combos)
+      for (const auto& v : values) {
+        auto k = c;
+        k[name] = v;
+        next.push_back(k);
+      }
+    combos.swap(next);
+  }
+  for (const auto& c : combos) settings.emplace_back(method.knobs, c, method.name);
+
+  const Scene scene = buildScene(args);
+  const bool progress = !args.has("quiet");
+  std::fprintf(stderr, "lucent bench: reference %s (%s)\n", refMethod.name.c_str(), refKnobs.summary().c_str());
+  const render::RenderResult ref = refMethod.run(scene, refKnobs, progress);
+  for (const auto& n : ref.notes) std::fprintf(stderr, "lucent bench: reference warning: %s\n", n.c_str());
+
+  std::vector<Row> rows;
+  for (std::size_t i = 0; i < settings.size(); ++i) {
+    std::fprintf(stderr, "lucent bench: [%zu/%zu] %s (%s)\n", i + 1, settings.size(), method.name.c_str(),
+                 settings[i].summary().c_str());
+    const render::RenderResult r = method.run(scene, settings[i], progress);
+    for (const auto& n : r.notes) std::fprintf(stderr, "lucent bench: warning: %s\n", n.c_str());
+    rows.push_back({method.name, settings[i].summary(), r.seconds, peakMemoryMiB(), r.figures,
+                    image::compareImages(r.image, ref.image)});
+  }
+
+  std::ostringstream csv;
+  csv << "method,knobs,seconds,peak_memory_mib,spacing_mm,surface_samples,rmse_tonemapped,relative_rms,max_abs_error,"
+         "speedup_vs_reference\n";
+  auto fig = [](const std::map<std::string, double>& f, const char* k) {
+    const auto it = f.find(k);
+    return it == f.end() ? std::nan("") : it->second;
+  };
+  std::printf("reference: %s (%s), %.2f s\n", refMethod.name.c_str(), refKnobs.summary().c_str(), ref.seconds);
+  std::printf("%-48s %9s %9s %11s %12s %12s %8s\n", "knobs", "seconds", "spacing", "samples", "rmse_tone", "rel_rms", "speedup");
+  for (const Row& r : rows) {
+    csv << r.method << ",\"" << r.knobs << "\"," << r.seconds << "," << r.memory << "," << fig(r.figures, "spacing_mm")
+        << "," << fig(r.figures, "surface_samples") << "," << r.errors.rmseToneMapped << "," << r.errors.relativeRms
+        << "," << r.errors.maxAbsError << "," << ref.seconds / r.seconds << "\n";
+    std::printf("%-48s %9.3f %9.4g %11.0f %12.3e %12.3e %8.1f\n", r.knobs.c_str(), r.seconds, fig(r.figures, "spacing_mm"),
+                fig(r.figures, "surface_samples"), r.errors.rmseToneMapped, r.errors.relativeRms, ref.seconds / r.seconds);
+  }
+  if (args.has("csv")) {
+    io::AtomicFile out(args.get("csv"));
+    {
+      std::ofstream f(out.tempPath());
+      f << csv.str();
+      if (!f) throw InputError("cannot write '" + args.get("csv") + "': check free space and permissions");
+    }
+    out.commit();
+  }
+  if (args.has("plot")) {
+    plot::Series s{method.name, {}, {}, {214, 39, 40}, true};
+    for (const Row& r : rows) {
+      s.x.push_back(r.seconds);
+      s.y.push_back(r.errors.relativeRms);
+    }
+    plot::Series line = s;
+    line.points = false;
+    line.name = method.name + " (sweep order)";
+    plot::ChartSpec spec;
+    spec.title = "Error against time: " + scene.meshName + ", " + scene.material.name + ", " +
+                 std::to_string(int(std::lround(scene.sizeMm))) + " mm";
+    spec.xLabel = "wall time (s)";
+    spec.yLabel = "relative RMS error vs reference";
+    spec.logX = spec.logY = true;
+    plot::writeLineChart(args.get("plot"), spec, {line, s});
+  }
+  return 0;
+}
+
+}  // namespace lucent::cli

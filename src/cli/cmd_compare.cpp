@@ -1,0 +1,56 @@
+/// `lucent compare A B`: error metrics of image A against the reference B, as text or JSON.
+#include <cstdio>
+#include <iostream>
+
+#include <lucent/image/metrics.hpp>
+
+#include "../util/error.hpp"
+#include "commands.hpp"
+#include "image_output.hpp"
+#include "json_writer.hpp"
+
+namespace lucent::cli {
+
+int runCompare(int argc, char** argv) {
+  std::vector<OptionSpec> specs = toneMapOptionSpecs();
+  specs.push_back({"json", "", "print the metrics as JSON"});
+  Args args("compare", "lucent compare TEST.exr|png REFERENCE.exr|png [--json]", specs);
+  args.parse(argc, argv, 2);
+  if (args.helpRequested()) {
+    std::cout << args.helpText()
+              << "\nmetrics (DESIGN.md): rmse_tonemapped = RMSE of tone-mapped values in [0,1] over all pixels, both\n"
+                 "images mapped with the reference's L_avg; relative_rms = sqrt(sum|a-b|^2/sum|b|^2) of linear\n"
+                 "radiance over covered pixels; max_abs_error = largest per-channel |a-b|. PNG inputs are display\n"
+                 "values already: only rmse (of those values) and max_abs_error are meaningful.\n";
+    return 0;
+  }
+  if (args.positional().size() != 2) args.fail("needs exactly two images: TEST REFERENCE");
+  const std::string testPath = args.positional()[0], refPath = args.positional()[1];
+  const image::Image test = readImage(testPath), ref = readImage(refPath);
+  const image::ToneMap tone = toneMapFromArgs(args);
+  const bool linear = isExr(testPath) && isExr(refPath);
+  if (!linear && isExr(testPath) != isExr(refPath))
+    args.fail("compare two EXR images (linear) or two PNG images (display values), not one of each");
+  image::ImageErrors e;
+  try {
+    e = linear ? image::compareImages(test, ref, tone) : image::compareDisplayImages(test, ref);
+  } catch (const std::invalid_argument& ex) {
+    throw InputError("lucent compare: '" + testPath + "' vs '" + refPath + "': " + ex.what());
+  }
+  if (args.has("json")) {
+    JsonObject j;
+    j.add("test", testPath).add("reference", refPath).add("rmse_tonemapped", e.rmseToneMapped);
+    if (linear) j.add("relative_rms", e.relativeRms);
+    j.add("max_abs_error", e.maxAbsError).add("covered_pixels", double(e.coveredPixels));
+    if (linear) j.add("coverage_mismatch", double(e.coverageMismatch));
+    std::printf("%s\n", j.str().c_str());
+  } else {
+    std::printf("rmse_tonemapped   %.6g\n", e.rmseToneMapped);
+    if (linear) std::printf("relative_rms      %.6g\n", e.relativeRms);
+    std::printf("max_abs_error     %.6g\n", e.maxAbsError);
+    if (linear) std::printf("coverage_mismatch %zu of %zu covered pixels\n", e.coverageMismatch, e.coveredPixels);
+  }
+  return 0;
+}
+
+}  // namespace lucent::cli

@@ -1,0 +1,12 @@
+#pragma once
+/// @file commands.hpp
+/// @brief The subcommands of the `lucent` CLI; each returns the process exit code.
+namespace lucent::cli {
+
+int runRender(int argc, char** argv);
+int runProfile(int argc, char** argv);
+int runMaterials(int argc, char** argv);
+int runCompare(int argc, char** argv);
+int runBench(int argc, char** argv);
+
+}  // namespace lucent::cli

@@ -1,0 +1,123 @@
+#include "scene_setup.hpp"
+
+#include <filesystem>
+#include <sstream>
+
+#include "../io/exr_io.hpp"
+#include "../io/mesh_io.hpp"
+#include "../raycast/embree_ray_caster.hpp"
+#include "../scene/builtin_shapes.hpp"
+#include "../util/error.hpp"
+#include "material_options.hpp"
+#include <lucent/scene/mesh_check.hpp>
+
+namespace lucent::cli {
+
+namespace {
+constexpr const char* kDefaultShape = "genus7";
+constexpr double kDefaultSizeMm = 30.0;
+constexpr const char* kDefaultMaterial = "skin1";
+
+/// "point:X,Y,Z[:R,G,B]" (mm; R,G,B = irradiance at the object's centre), "dir:X,Y,Z[:R,G,B]" (towards
+/// the light; irradiance), "env:FILE.exr[:SCALE]" (lat-long radiance).
+scene::Light parseLight(const Args& args, const std::string& text, double diag, std::string& description) {
+  const auto colon = text.find(':');
+  const std::string kind = text.substr(0, colon);
+  const std::string rest = colon == std::string::npos ? "" : text.substr(colon + 1);
+  const auto colon2 = rest.find(':');
+  const std::string first = rest.substr(0, colon2);
+  const std::string second = colon2 == std::string::npos ? "" : rest.substr(colon2 + 1);
+  const std::string what = "lucent " + args.command() + ": --light " + text;
+  if (kind == "point" || kind == "dir") {
+    if (first.empty()) args.fail("--light " + text + ": give a position or direction, e.g. " + kind + ":0,50,-80");
+    const glm::dvec3 v = parseTriple(first, what);
+    const glm::dvec3 e = second.empty() ? glm::dvec3(1) : parseTriple(second, what);
+    if (glm::length(v) <= 0) args.fail("--light " + text + ": the vector must not be zero");
+    std::ostringstream d;
+    d << kind << " (" << v.x << "," << v.y << "," << v.z << ") E=(" << e.x << "," << e.y << "," << e.z << ")";
+    description = d.str();
+    if (kind == "point") {
+      if (glm::length(v) < 0.5 * diag)
+        args.fail("--light " + text + ": the point light is inside the object's bounding sphere; move it further out");
+      return scene::PointLight{v, e * glm::dot(v, v)};
+    }
+    return scene::DirectionalLight{glm::normalize(v), e};
+  }
+  if (kind == "env") {
+    if (first.empty()) args.fail("--light env: give an EXR file, e.g. env:studio.exr");
+    const image::Image img = io::readExr(first);
+    scene::EnvironmentLight env;
+    env.width = img.width;
+    env.height = img.height;
+    env.source = first;
+    env.scale = second.empty() ? 1.0 : parseNumber(second, what);
+    for (const auto& p : img.pixels) env.radiance.push_back(glm::vec3(p));
+    description = "environment " + first;
+    return env;
+  }
+  args.fail("--light '" + text + "': unknown kind '" + kind + "'; use point:X,Y,Z[:R,G,B], dir:X,Y,Z[:R,G,B] or env:FILE.exr[:SCALE]");
+}
+}  // namespace
+
+std::vector<OptionSpec> sceneOptionSpecs() {
+  std::vector<OptionSpec> specs{
+      {"mesh", "FILE", "mesh to render (.ply .obj .stl .vtp .vtk)"},
+      {"shape", "NAME", std::string("built-in shape (default ") + kDefaultShape + "): sphere torus double-torus genus7 cube-cavity twirl slab"},
+      {"size-mm", "X", "scale the object so its bounding-box diagonal is X mm (default 30)"},
+      {"light", "SPEC", "point:X,Y,Z[:R,G,B] | dir:X,Y,Z[:R,G,B] | env:FILE.exr[:SCALE] (mm; R,G,B = irradiance at the centre)", true},
+      {"view", "X,Y,Z", "direction from the object towards the camera (default 0,0.6,1)"},
+      {"width", "W", "image width in pixels (default 400)"},
+      {"height", "H", "image height in pixels (default 400)"},
+      {"skip-mesh-check", "", "render even if the mesh is not closed and outward-oriented"},
+  };
+  for (auto& m : materialOptionSpecs()) specs.push_back(m);
+  return specs;
+}
+
+Scene buildScene(const Args& args) {
+  Scene s;
+  if (args.has("mesh") && args.has("shape")) args.fail("give either --mesh or --shape, not both");
+  if (args.has("mesh")) {
+    s.meshName = args.get("mesh");
+    s.mesh = io::readMesh(s.meshName);
+  } else {
+    s.meshName = args.get("shape", kDefaultShape);
+    s.mesh = scene::makeBuiltinShape(s.meshName);
+  }
+  s.sizeMm = args.number("size-mm", kDefaultSizeMm, 1e-6, 1e9);
+  if (!args.has("skip-mesh-check")) {
+    const scene::MeshReport report = scene::checkMesh(s.mesh);
+    if (!report.ok()) {
+      std::string msg = "mesh '" + s.meshName + "' does not bound a volume:";
+      for (const auto& p : report.problems()) msg += "\n  - " + p;
+      msg += "\n  (or pass --skip-mesh-check to render it anyway; subsurface results will not be physical)";
+      throw InputError("lucent " + args.command() + ": " + msg);
+    }
+  }
+  s.mesh.scaleToSize(s.sizeMm);
+  s.vertexNormals = s.mesh.vertexNormals();
+  s.material = materialFromArgs(args, kDefaultMaterial);
+
+  const double diag = s.mesh.bounds().diagonal();
+  for (const std::string& spec : args.all("light")) {
+    std::string d;
+    s.lights.push_back(parseLight(args, spec, diag, d));
+    s.lightDescriptions.push_back(d);
+  }
+  if (s.lights.empty()) {
+    // Default: a back light above and behind the object (the translucent glow) and a weak frontal fill.
+    const glm::dvec3 back = glm::normalize(glm::dvec3(0.3, 0.9, -1.0)) * (2.0 * diag);
+    s.lights.push_back(scene::PointLight{back, glm::dvec3(1.0) * glm::dot(back, back)});
+    s.lights.push_back(scene::DirectionalLight{glm::normalize(glm::dvec3(-0.6, 0.5, 1.0)), glm::dvec3(0.12)});
+    s.lightDescriptions = {"point back light (irradiance 1 at the centre)", "directional front fill (0.12)"};
+  }
+
+  const int w = args.integer("width", 400, 1, 16384), h = args.integer("height", 400, 1, 16384);
+  const glm::dvec3 view = args.triple("view", glm::dvec3(0, 0.6, 1));
+  if (glm::length(view) <= 0) args.fail("--view must not be the zero vector");
+  s.camera = scene::PinholeCamera::frame(s.mesh.bounds(), view, w, h);
+  s.caster = std::make_unique<raycast::EmbreeRayCaster>(s.mesh);
+  return s;
+}
+
+}  // namespace lucent::cli

@@ -1,0 +1,36 @@
+#pragma once
+/// @file scene_setup.hpp
+/// @brief The scene options render and bench share (mesh or shape, size, material, lights, camera), and
+/// the built-in default scene: a back-lit skin1 genus-7 ring, whose thin parts glow.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <lucent/optics/materials.hpp>
+#include <lucent/scene/camera.hpp>
+#include <lucent/scene/light.hpp>
+#include <lucent/scene/mesh.hpp>
+#include <lucent/scene/ray_caster.hpp>
+
+#include "args.hpp"
+
+namespace lucent::cli {
+
+struct Scene {
+  std::string meshName;
+  scene::TriangleMesh mesh;
+  std::vector<glm::vec3> vertexNormals;
+  double sizeMm = 0;
+  optics::Material material;
+  std::vector<scene::Light> lights;
+  std::vector<std::string> lightDescriptions;
+  scene::PinholeCamera camera;
+  std::unique_ptr<scene::RayCaster> caster;
+};
+
+/// The options that describe a scene, for a subcommand's option list.
+std::vector<OptionSpec> sceneOptionSpecs();
+/// Builds the scene from parsed options; throws InputError on bad input (with the fix).
+Scene buildScene(const Args& args);
+
+}  // namespace lucent::cli

@@ -1,0 +1,33 @@
+#pragma once
+/// @file knobs.hpp
+/// @brief A technique's accuracy knobs as name=value pairs: declared with defaults and help, validated,
+/// and recorded verbatim in stats and bench tables.
+#include <map>
+#include <string>
+#include <vector>
+
+namespace lucent::render {
+
+struct KnobSpec {
+  std::string name, defaultValue, help;
+};
+
+class Knobs {
+ public:
+  Knobs(const std::vector<KnobSpec>& specs, const std::map<std::string, std::string>& given,
+        const std::string& method);
+  double number(const std::string& name) const;
+  const std::string& text(const std::string& name) const;
+  const std::map<std::string, std::string>& values() const { return mValues; }
+  /// "a=1;b=2", stable order, for tables.
+  std::string summary() const;
+
+ private:
+  std::map<std::string, std::string> mValues;
+  std::string mMethod;
+};
+
+/// "spacing=0.1,fraction=0.5" -> map; throws InputError on a malformed pair.
+std::map<std::string, std::string> parseKnobList(const std::string& text);
+
+}  // namespace lucent::render

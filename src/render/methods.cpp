@@ -1,0 +1,22 @@
+#include "methods.hpp"
+
+#include "../util/error.hpp"
+
+namespace lucent::render {
+
+Method referenceMethod();
+
+const std::vector<Method>& methods() {
+  static const std::vector<Method> all{referenceMethod()};
+  return all;
+}
+
+const Method& findMethod(const std::string& name) {
+  for (const auto& m : methods())
+    if (m.name == name) return m;
+  std::string names;
+  for (const auto& m : methods()) names += (names.empty() ? "" : ", ") + m.name;
+  throw InputError("unknown method '" + name + "'; available: " + names);
+}
+
+}  // namespace lucent::render
