@@ -62,9 +62,11 @@ struct DipoleChannel {
 
  private:
   T pole(T z, T r) const {
-    const T d = std::sqrt(r * r + z * z);
+    const T d = std::hypot(r, z);  // no overflow of r*r for huge r
     const T sd = sigmaTr * d;
-    return z * (T(1) + sd) * std::exp(-sd) / (d * d * d);
+    const T e = std::exp(-sd);
+    if (e == T(0)) return T(0);  // else (1 + sd) e is inf * 0 = NaN for astronomically large r
+    return z * (T(1) + sd) * e / (d * d * d);
   }
   T poleIntegral(T z, T rho) const {
     const T inner = std::exp(-sigmaTr * z);

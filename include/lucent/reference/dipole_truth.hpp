@@ -40,9 +40,13 @@ inline SpacingChoice chooseSpacing(const scene::TriangleMesh& mesh, double minMe
   c.meanFreePath = minMeanFreePath;
   const double diag = mesh.bounds().diagonal();
   c.spacing = std::min(fractionOfMeanFreePath * minMeanFreePath, diag / minSamplesPerDiagonal);
-  while (countSurfaceSamples(mesh, c.spacing) > maxSamples) {
+  // Each triangle gets at least one sample, so coarsening stops once every triangle has one (the spacing
+  // then exceeds the longest edge): a budget below the triangle count cannot be met by spacing alone.
+  std::size_t count = countSurfaceSamples(mesh, c.spacing);
+  while (count > maxSamples && count > mesh.triangles.size()) {
     c.spacing *= 1.25;
     c.budgetLimited = true;
+    count = countSurfaceSamples(mesh, c.spacing);
   }
   return c;
 }

@@ -1,0 +1,161 @@
+// The lucent CLI as a user meets it: outputs, and one-line errors with exit code 2 for bad input.
+#include <doctest/doctest.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "temp_dir.hpp"
+
+namespace {
+struct Run {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream f(path);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+Run lucentCli(const std::string& args, const lucent::test::TempDir& dir) {
+  const std::string out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string cmd = std::string(LUCENT_EXE) + " " + args + " >" + out + " 2>" + err + " </dev/null";
+  const int status = std::system(cmd.c_str());
+  Run r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+// Jensen et al. 2001's dipole, typed in again from the paper (not from lucent's headers).
+double jensenRd(double r, double sigmaA, double sigmaSp, double eta) {
+  const double pi = 3.14159265358979323846;
+  const double st = sigmaA + sigmaSp, alpha = sigmaSp / st, str = std::sqrt(3 * sigmaA * st);
+  const double fdr = -1.440 / (eta * eta) + 0.710 / eta + 0.668 + 0.0636 * eta, a = (1 + fdr) / (1 - fdr);
+  const double zr = 1 / st, zv = zr * (1 + 4.0 / 3.0 * a);
+  const double dr = std::sqrt(r * r + zr * zr), dv = std::sqrt(r * r + zv * zv);
+  return alpha / (4 * pi) *
+         (zr * (1 + str * dr) * std::exp(-str * dr) / (dr * dr * dr) + zv * (1 + str * dv) * std::exp(-str * dv) / (dv * dv * dv));
+}
+}  // namespace
+
+TEST_CASE("lucent profile --material skin1 --r 0,0.1,1,10 matches Jensen 2001 to 1e-6 relative") {
+  lucent::test::TempDir dir;
+  const Run r = lucentCli("profile --material skin1 --r 0,0.1,1,10", dir);
+  REQUIRE(r.code == 0);
+  std::istringstream lines(r.out);
+  std::string line;
+  std::getline(lines, line);
+  CHECK(line == "r_mm,R,G,B");
+  const double sa[3] = {0.032, 0.17, 0.48}, ss[3] = {0.74, 0.88, 1.01};
+  int rows = 0;
+  while (std::getline(lines, line)) {
+    double v[4];
+    REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3]) == 4);
+    for (int c = 0; c < 3; ++c) CHECK(v[c + 1] == doctest::Approx(jensenRd(v[0], sa[c], ss[c], 1.3)).epsilon(1e-6));
+    ++rows;
+  }
+  CHECK(rows == 4);
+}
+
+TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, nothing written") {
+  lucent::test::TempDir dir;
+  { std::ofstream(dir / "open.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\n"; }
+  const std::string out = dir / "x.exr";
+  struct Case {
+    std::string args, expect;
+  };
+  const std::vector<Case> cases = {
+      {"frobnicate", "unknown command"},
+      {"render --out " + out + " --bogus 1", "unknown option '--bogus'"},
+      {"render --out " + out + " --material unobtainium", "run 'lucent materials'"},
+      {"render --out " + out + " --shape dodecahedron", "built-in shapes are"},
+      {"render --out " + out + " --mesh " + dir / "missing.ply", "no such file"},
+      {"render --out " + out + " --mesh " + dir / "open.obj", "vtkFillHolesFilter"},
+      {"render --out " + out + " --mesh " + dir / "x.xyz", "no such file"},
+      {"render --out " + out + " --size-mm abc", "not a number"},
+      {"render --out " + out + " --size-mm -3", "out of range"},
+      {"render --out " + out + " --eta 0.5", "eta must lie in"},
+      {"render --out " + out + " --sigma-a 0.1,0.1", "needs both --sigma-a and --sigma-s"},
+      {"render --out " + out + " --sigma-a 0.1,0.1 --sigma-s 1,1,1", "3 comma-separated numbers"},
+      {"render --out " + out + " --method magic", "available: reference"},
+      {"render --out " + out + " --knob warp=9", "has no knob 'warp'"},
+      {"render --out " + out + " --light laser:1,2,3", "unknown kind 'laser'"},
+      {"render --out " + out + " --light point:0,0,0", "must not be zero"},
+      {"render --out " + dir / "x.tiff", "use a .exr or .png"},
+      {"render --out " + dir / "no-such-folder/x.exr" + " --width 8 --height 8 --quiet", "does not exist"},
+      {"render", "no output"},
+      {"profile --r 1,-2", "must be >= 0"},
+      {"profile --material skin1 --sigma-a 1,1,1 --sigma-s 1,1,1", "not both"},
+      {"compare " + dir / "a.exr", "exactly two images"},
+      {"compare " + dir / "a.exr " + dir / "b.exr", "no such file"},
+      {"bench --sweep fraction", "must be KNOB=V1,V2"},
+  };
+  for (const auto& c : cases) {
+    const Run r = lucentCli(c.args, dir);
+    INFO("lucent " << c.args << "\nstderr: " << r.err);
+    CHECK(r.code == 2);
+    CHECK(contains(r.err, c.expect));
+    CHECK(r.out.empty());
+  }
+  CHECK_FALSE(std::filesystem::exists(out));
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir.path))
+    CHECK_FALSE(contains(e.path().string(), ".tmp-"));
+}
+
+TEST_CASE("render writes EXR, PNG and stats; compare of an image with itself reports zero error") {
+  lucent::test::TempDir dir;
+  const Run r = lucentCli("render --shape sphere --size-mm 10 --width 32 --height 32 --quiet --out " + dir / "a.exr" +
+                              " --out " + dir / "a.png" + " --stats " + dir / "a.json",
+                          dir);
+  REQUIRE(r.code == 0);
+  CHECK(std::filesystem::file_size(dir / "a.exr") > 0);
+  CHECK(std::filesystem::file_size(dir / "a.png") > 0);
+  const std::string stats = slurp(dir / "a.json");
+  for (const char* key : {"\"wall_seconds\"", "\"peak_memory_mib\"", "\"surface_samples\"", "\"spacing_mm\"", "\"fraction\": \"0.5\""})
+    CHECK(contains(stats, key));
+  const Run c = lucentCli("compare --json " + dir / "a.exr " + dir / "a.exr", dir);
+  REQUIRE(c.code == 0);
+  CHECK(contains(c.out, "\"rmse_tonemapped\": 0"));
+  CHECK(contains(c.out, "\"relative_rms\": 0"));
+}
+
+TEST_CASE("materials lists every measured material; every command has --help") {
+  lucent::test::TempDir dir;
+  const Run m = lucentCli("materials --csv", dir);
+  REQUIRE(m.code == 0);
+  CHECK(std::count(m.out.begin(), m.out.end(), '\n') == 48);
+  CHECK(contains(m.out, "Spectralon"));
+  CHECK(contains(m.out, "Pacific Ocean Surface Water"));
+  for (const char* cmd : {"render", "profile", "materials", "compare", "bench"}) {
+    const Run h = lucentCli(std::string(cmd) + " --help", dir);
+    CHECK(h.code == 0);
+    CHECK(contains(h.out, "usage: lucent"));
+  }
+}
+
+TEST_CASE("bench sweeps knobs against a reference and writes a CSV row per setting and a chart") {
+  lucent::test::TempDir dir;
+  const Run b = lucentCli("bench --shape sphere --size-mm 5 --width 24 --height 24 --quiet --sweep fraction=2,1 "
+                          "--reference-knob fraction=0.5 --csv " + dir / "b.csv" + " --plot " + dir / "b.png",
+                          dir);
+  INFO(b.err);
+  REQUIRE(b.code == 0);
+  const std::string csv = slurp(dir / "b.csv");
+  CHECK(std::count(csv.begin(), csv.end(), '\n') == 3);
+  CHECK(contains(csv, "fraction=2"));
+  CHECK(std::filesystem::file_size(dir / "b.png") > 1000);
+}

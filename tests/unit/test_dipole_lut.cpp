@@ -1,0 +1,55 @@
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <lucent/optics/dipole_lut.hpp>
+#include <lucent/optics/materials.hpp>
+
+using namespace lucent::optics;
+
+namespace {
+// The bound of RdTableBound, checked densely (not only at the midpoints the table was refined on).
+void checkBound(const Material& m, double rMax, RdTableBound<double> bound) {
+  const auto d = Dipole<double>::make(m.sigmaA, m.sigmaSPrime, m.eta);
+  const RdTable<double> table(d, rMax, bound);
+  REQUIRE_FALSE(table.saturated());
+  const auto peak = d.rd(0);
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> u(0, 1);
+  double worst = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const double s = u(rng);
+    const double r = rMax * s * s;  // as dense near 0 as the table itself
+    const auto exact = d.rd(r), approx = table(r);
+    for (int c = 0; c < 3; ++c) {
+      const double allowed = bound.relTol * std::max(exact[c], bound.floor * peak[c]);
+      if (allowed > 0) worst = std::max(worst, std::abs(approx[c] - exact[c]) / allowed);
+      else CHECK(approx[c] == 0);
+    }
+  }
+  INFO(m.name << " rMax " << rMax << ": " << table.size() << " nodes, worst error / bound = " << worst);
+  CHECK(worst <= 1.0);
+}
+}  // namespace
+
+TEST_CASE("The Rd table meets its stated error bound for every measured material") {
+  for (const auto& e : kMeasuredMaterials) checkBound(toMaterial(e), 30.0, {1e-3, 1e-6});
+}
+
+TEST_CASE("The Rd table meets tighter bounds, on tiny and huge ranges, for the hard materials") {
+  for (const char* name : {"skin1", "spectralon", "cream", "ketchup"})
+    for (double rMax : {0.01, 1.0, 10000.0}) checkBound(*findMaterial(name), rMax, {1e-4, 1e-5});
+}
+
+TEST_CASE("The Rd table returns 0 beyond rMax and for negative or NaN distances") {
+  const auto d = Dipole<double>::make(Rgb<double>(0.032), Rgb<double>(0.74), 1.3);
+  const RdTable<double> table(d, 10.0);
+  CHECK(table(10.5).x == 0);
+  CHECK(table(-1.0).x == 0);
+  CHECK(table(std::nan("")).x == 0);
+  CHECK(table(10.0).x == doctest::Approx(d.rd(10.0).x).epsilon(1e-3));
+  CHECK_THROWS(RdTable<double>(d, 0.0));
+  CHECK_THROWS(RdTable<double>(d, std::nan("")));
+}
