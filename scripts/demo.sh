@@ -5,6 +5,5 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
 mkdir -p out
-build/lucent render --out out/demo.exr --stats out/demo.json
-build/lucent render --out out/demo.png --from-exr out/demo.exr
+build/lucent render --out out/demo.exr --out out/demo.png --stats out/demo.json
 echo "lucent: wrote out/demo.exr, out/demo.png, out/demo.json"

@@ -20,7 +20,7 @@ namespace lucent::cli {
 
 namespace {
 struct Row {
-  std::string method, knobs;
+  std::string method, knobs, changedKnobs;
   double seconds = 0, memory = 0;
   std::map<std::string, double> figures;
   image::ImageErrors errors;
@@ -102,7 +102,7 @@ int runBench(int argc, char** argv) {
                  settings[i].summary().c_str());
     const render::RenderResult r = method.run(scene, settings[i], progress);
     for (const auto& n : r.notes) std::fprintf(stderr, "lucent bench: warning: %s\n", n.c_str());
-    rows.push_back({method.name, settings[i].summary(), r.seconds, peakMemoryMiB(), r.figures,
+    rows.push_back({method.name, settings[i].summary(), settings[i].summary(true), r.seconds, peakMemoryMiB(), r.figures,
                     image::compareImages(r.image, ref.image)});
   }
 
@@ -113,13 +113,14 @@ int runBench(int argc, char** argv) {
     const auto it = f.find(k);
     return it == f.end() ? std::nan("") : it->second;
   };
-  std::printf("reference: %s (%s), %.2f s\n", refMethod.name.c_str(), refKnobs.summary().c_str(), ref.seconds);
-  std::printf("%-48s %9s %9s %11s %12s %12s %8s\n", "knobs", "seconds", "spacing", "samples", "rmse_tone", "rel_rms", "speedup");
+  std::printf("reference: %s (%s), %.2f s, %.0f samples\n", refMethod.name.c_str(), refKnobs.summary(true).c_str(),
+              ref.seconds, fig(ref.figures, "surface_samples"));
+  std::printf("%-48s %9s %9s %11s %12s %12s %8s\n", "knobs", "seconds", "spacing", "samples", "rmse_tone", "rel_rms", "speedup");  // speedup: reference time / this time
   for (const Row& r : rows) {
     csv << r.method << ",\"" << r.knobs << "\"," << r.seconds << "," << r.memory << "," << fig(r.figures, "spacing_mm")
         << "," << fig(r.figures, "surface_samples") << "," << r.errors.rmseToneMapped << "," << r.errors.relativeRms
         << "," << r.errors.maxAbsError << "," << ref.seconds / r.seconds << "\n";
-    std::printf("%-48s %9.3f %9.4g %11.0f %12.3e %12.3e %8.1f\n", r.knobs.c_str(), r.seconds, fig(r.figures, "spacing_mm"),
+    std::printf("%-48s %9.3f %9.4g %11.0f %12.3e %12.3e %8.1f\n", r.changedKnobs.c_str(), r.seconds, fig(r.figures, "spacing_mm"),
                 fig(r.figures, "surface_samples"), r.errors.rmseToneMapped, r.errors.relativeRms, ref.seconds / r.seconds);
   }
   if (args.has("csv")) {

@@ -10,7 +10,7 @@ namespace lucent::render {
 Knobs::Knobs(const std::vector<KnobSpec>& specs, const std::map<std::string, std::string>& given,
              const std::string& method)
     : mMethod(method) {
-  for (const auto& s : specs) mValues[s.name] = s.defaultValue;
+  for (const auto& s : specs) mValues[s.name] = mDefaults[s.name] = s.defaultValue;
   for (const auto& [k, v] : given) {
     if (!mValues.count(k)) {
       std::string names;
@@ -27,10 +27,11 @@ double Knobs::number(const std::string& name) const {
 
 const std::string& Knobs::text(const std::string& name) const { return mValues.at(name); }
 
-std::string Knobs::summary() const {
+std::string Knobs::summary(bool onlyChanged) const {
   std::string s;
-  for (const auto& [k, v] : mValues) s += (s.empty() ? "" : ";") + k + "=" + v;
-  return s;
+  for (const auto& [k, v] : mValues)
+    if (!onlyChanged || v != mDefaults.at(k)) s += (s.empty() ? "" : ";") + k + "=" + v;
+  return s.empty() ? "defaults" : s;
 }
 
 std::map<std::string, std::string> parseKnobList(const std::string& text) {

@@ -19,11 +19,11 @@ class Knobs {
   double number(const std::string& name) const;
   const std::string& text(const std::string& name) const;
   const std::map<std::string, std::string>& values() const { return mValues; }
-  /// "a=1;b=2", stable order, for tables.
-  std::string summary() const;
+  /// "a=1;b=2", stable order, for tables; with onlyChanged, just the knobs that differ from their defaults.
+  std::string summary(bool onlyChanged = false) const;
 
  private:
-  std::map<std::string, std::string> mValues;
+  std::map<std::string, std::string> mValues, mDefaults;
   std::string mMethod;
 };
 
