@@ -53,7 +53,7 @@ int runRender(int argc, char** argv) {
   if (outputs.empty()) args.fail("no output: give --out FILE.exr or --out FILE.png");
   const image::ToneMap toneMap = toneMapFromArgs(args);
   for (const auto& o : outputs)
-    if (!isExr(o) && o.size() >= 4 && o.substr(o.size() - 4) != ".png")
+    if (!isExr(o) && !isPng(o))
       args.fail("--out '" + o + "': use a .exr or .png file name");
 
   const render::Method& method = render::findMethod(args.get("method", "reference"));

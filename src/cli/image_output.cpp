@@ -19,6 +19,7 @@ std::string extensionOf(const std::string& path) {
 }  // namespace
 
 bool isExr(const std::string& path) { return extensionOf(path) == ".exr"; }
+bool isPng(const std::string& path) { return extensionOf(path) == ".png"; }
 
 std::vector<OptionSpec> toneMapOptionSpecs() {
   return {{"tonemap", "paper|exposure", "PNG tone mapping: the paper's s/(1+s), s = key L/L_avg (default), or exposure + sRGB"},

@@ -17,5 +17,6 @@ void writeImage(const std::string& path, const image::Image& linear, const image
 /// Reads .exr (linear) or .png (display values).
 image::Image readImage(const std::string& path);
 bool isExr(const std::string& path);
+bool isPng(const std::string& path);
 
 }  // namespace lucent::cli
