@@ -3,7 +3,6 @@
 /// reference, and writes a CSV table and a PNG chart of error against time.
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -123,15 +122,7 @@ int runBench(int argc, char** argv) {
     std::printf("%-48s %9.3f %9.4g %11.0f %12.3e %12.3e %8.1f\n", r.changedKnobs.c_str(), r.seconds, fig(r.figures, "spacing_mm"),
                 fig(r.figures, "surface_samples"), r.errors.rmseToneMapped, r.errors.relativeRms, ref.seconds / r.seconds);
   }
-  if (args.has("csv")) {
-    io::AtomicFile out(args.get("csv"));
-    {
-      std::ofstream f(out.tempPath());
-      f << csv.str();
-      if (!f) throw InputError("cannot write '" + args.get("csv") + "': check free space and permissions");
-    }
-    out.commit();
-  }
+  if (args.has("csv")) io::writeTextFile(args.get("csv"), csv.str());
   if (args.has("plot")) {
     plot::Series s{method.name, {}, {}, {214, 39, 40}, true};
     for (const Row& r : rows) {

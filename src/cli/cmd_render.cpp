@@ -1,6 +1,5 @@
 /// `lucent render`: renders a scene with one method and writes EXR/PNG images and a JSON stats file.
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 
 #include "../io/atomic_file.hpp"
@@ -23,15 +22,6 @@ std::string methodHelp() {
   return s;
 }
 
-void writeText(const std::string& path, const std::string& text) {
-  io::AtomicFile out(path);
-  {
-    std::ofstream f(out.tempPath());
-    f << text << "\n";
-    if (!f) throw InputError("cannot write '" + path + "': check free space and permissions");
-  }
-  out.commit();
-}
 }  // namespace
 
 int runRender(int argc, char** argv) {
@@ -99,7 +89,7 @@ int runRender(int argc, char** argv) {
         .add("peak_memory_mib", peakMemoryMiB())
         .add("figures", figures)
         .raw("warnings", notes);
-    writeText(args.get("stats"), stats.str());
+    io::writeTextFile(args.get("stats"), stats.str() + "\n");
   }
   std::fprintf(stderr, "lucent render: %s in %.2f s\n", method.name.c_str(), result.seconds);
   return 0;

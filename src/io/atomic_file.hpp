@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <system_error>
 
@@ -40,5 +41,16 @@ class AtomicFile {
   std::string mPath, mTemp;
   bool mCommitted = false;
 };
+
+/// Writes a whole text file atomically; throws InputError naming the file on failure.
+inline void writeTextFile(const std::string& path, const std::string& text) {
+  AtomicFile out(path);
+  {
+    std::ofstream f(out.tempPath());
+    f << text;
+    if (!f) throw InputError("cannot write '" + path + "': check free space and permissions");
+  }
+  out.commit();
+}
 
 }  // namespace lucent::io

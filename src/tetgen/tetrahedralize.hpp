@@ -1,0 +1,24 @@
+#pragma once
+/// @file tetrahedralize.hpp
+/// @brief Quality tetrahedralization of a closed triangle mesh with TetGen.
+///
+/// Licence: this target links Debian's libtet (TetGen 1.5), which is AGPL-3.0-or-later. It is kept in its
+/// own CMake target (lucent_tetgen, option LUCENT_WITH_TETGEN) so that a build without it is BSD-only.
+#include <lucent/scene/mesh.hpp>
+#include <lucent/scene/tet_mesh.hpp>
+
+namespace lucent::tetgen {
+
+struct TetOptions {
+  double radiusEdgeRatio = 2.0;     ///< TetGen -q: quality bound (smaller = rounder tets, more of them)
+  double maxVolume = 0;             ///< TetGen -a: target largest tet volume in mm^3 (0 = none); TetGen may exceed it
+                                    ///< slightly, and with preserveSurface by more at the surface
+  bool preserveSurface = true;      ///< TetGen -Y: no Steiner points on the surface (faces stay the input's)
+  long maxSteinerPoints = 2000000;  ///< TetGen -S: bounds TetGen's effort, so bad input cannot run forever
+};
+
+/// Cavities (closed components facing inward, e.g. the cube-cavity shape) are found and left empty.
+/// Throws InputError naming the problem (self-intersection, tiny features, close facets) and the repair.
+scene::TetMesh tetrahedralize(const scene::TriangleMesh& surface, const TetOptions& options = {});
+
+}  // namespace lucent::tetgen
