@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libglm-dev doctest-dev libtbb-dev libeigen3-dev
-  libembree-dev libopenexr-dev libvtk9-dev libtet1.5-dev
+  libembree-dev libopenexr-dev libvtk9-dev libtet1.5-dev libopenvdb-dev libboost-iostreams-dev
   xvfb xauth
 )
 

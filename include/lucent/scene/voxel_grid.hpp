@@ -1,0 +1,43 @@
+#pragma once
+/// @file voxel_grid.hpp
+/// @brief A dense scalar voxel grid in millimetres: a scanned or simulated density (from OpenVDB or
+/// vtkImageData) that heterogeneous techniques sample. Values sit at voxel centres.
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
+
+namespace lucent::scene {
+
+struct VoxelGrid {
+  glm::ivec3 dims{0};
+  glm::dvec3 origin{0};  ///< centre of voxel (0,0,0), mm
+  double voxelSize = 1;  ///< mm
+  std::vector<float> values;  ///< x fastest, then y, then z
+
+  std::size_t index(int i, int j, int k) const {
+    return (std::size_t(k) * std::size_t(dims.y) + std::size_t(j)) * std::size_t(dims.x) + std::size_t(i);
+  }
+  float at(int i, int j, int k) const { return values[index(i, j, k)]; }
+
+  /// Trilinear interpolation at a position (mm); outside the grid the nearest boundary value (clamped).
+  double sample(const glm::dvec3& p) const {
+    if (values.empty()) return 0;
+    const glm::dvec3 u = glm::clamp((p - origin) / voxelSize, glm::dvec3(0), glm::dvec3(dims - 1));
+    const glm::ivec3 i0 = glm::min(glm::ivec3(u), glm::max(dims - 2, glm::ivec3(0)));
+    const glm::ivec3 i1 = glm::min(i0 + 1, dims - 1);
+    const glm::dvec3 t = u - glm::dvec3(i0);
+    double v = 0;
+    for (int c = 0; c < 8; ++c) {
+      const int x = c & 1 ? i1.x : i0.x, y = c & 2 ? i1.y : i0.y, z = c & 4 ? i1.z : i0.z;
+      const double w = (c & 1 ? t.x : 1 - t.x) * (c & 2 ? t.y : 1 - t.y) * (c & 4 ? t.z : 1 - t.z);
+      v += w * double(at(x, y, z));
+    }
+    return v;
+  }
+};
+
+}  // namespace lucent::scene

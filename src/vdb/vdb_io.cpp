@@ -1,0 +1,104 @@
+#include "vdb_io.hpp"
+
+#include <openvdb/io/File.h>
+#include <openvdb/openvdb.h>
+
+#include <cmath>
+#include <filesystem>
+#include <mutex>
+
+#include "../io/atomic_file.hpp"
+#include "../util/error.hpp"
+
+namespace lucent::vdb {
+
+namespace {
+void initialize() {
+  static std::once_flag once;
+  std::call_once(once, [] { openvdb::initialize(); });
+}
+
+openvdb::io::File openFile(const std::string& path) {
+  if (!std::filesystem::exists(path)) throw InputError("cannot read '" + path + "': no such file; check the path");
+  initialize();
+  openvdb::io::File file(path);
+  try {
+    file.open();
+  } catch (const std::exception& e) {
+    throw InputError("cannot read '" + path + "' as OpenVDB: " + e.what() + "; is it a .vdb file?");
+  }
+  return file;
+}
+}  // namespace
+
+std::vector<std::string> gridNames(const std::string& path) {
+  openvdb::io::File file = openFile(path);
+  std::vector<std::string> names;
+  for (auto it = file.beginName(); it != file.endName(); ++it) names.push_back(it.gridName());
+  file.close();
+  return names;
+}
+
+scene::VoxelGrid readFloatGrid(const std::string& path, const std::string& gridName) {
+  openvdb::io::File file = openFile(path);
+  openvdb::GridBase::Ptr base;
+  std::string available;
+  for (auto it = file.beginName(); it != file.endName(); ++it) {
+    available += (available.empty() ? "" : ", ") + it.gridName();
+    if (base) continue;
+    if (!gridName.empty() && it.gridName() != gridName) continue;
+    openvdb::GridBase::Ptr g = file.readGrid(it.gridName());
+    if (gridName.empty() && !g->isType<openvdb::FloatGrid>()) continue;
+    base = g;
+  }
+  file.close();
+  if (!base)
+    throw InputError("'" + path + "' has no " + (gridName.empty() ? "float grid" : "grid named '" + gridName + "'") +
+                     "; it holds: " + (available.empty() ? "nothing" : available));
+  const auto grid = openvdb::gridPtrCast<openvdb::FloatGrid>(base);
+  if (!grid) throw InputError("grid '" + gridName + "' in '" + path + "' is not a float grid; lucent reads scalar densities");
+  const openvdb::Vec3d vs = grid->voxelSize();
+  if (!grid->transform().isLinear() || std::abs(vs.x() - vs.y()) > 1e-9 * vs.x() || std::abs(vs.x() - vs.z()) > 1e-9 * vs.x())
+    throw InputError("grid in '" + path + "' has non-uniform voxels; resample it to cubic voxels first");
+
+  scene::VoxelGrid out;
+  const openvdb::CoordBBox box = grid->evalActiveVoxelBoundingBox();
+  if (box.empty()) return out;
+  const openvdb::Coord lo = box.min(), dim = box.dim();
+  out.dims = {dim.x(), dim.y(), dim.z()};
+  out.voxelSize = vs.x();
+  const openvdb::Vec3d o = grid->indexToWorld(lo);
+  out.origin = {o.x(), o.y(), o.z()};
+  out.values.resize(std::size_t(dim.x()) * std::size_t(dim.y()) * std::size_t(dim.z()));
+  const auto accessor = grid->getConstAccessor();
+  for (int k = 0; k < dim.z(); ++k)
+    for (int j = 0; j < dim.y(); ++j)
+      for (int i = 0; i < dim.x(); ++i)
+        out.values[out.index(i, j, k)] = accessor.getValue(lo.offsetBy(i, j, k));
+  return out;
+}
+
+void writeFloatGrid(const std::string& path, const scene::VoxelGrid& grid, const std::string& gridName, float background) {
+  initialize();
+  auto vdbGrid = openvdb::FloatGrid::create(background);
+  vdbGrid->setName(gridName);
+  auto transform = openvdb::math::Transform::createLinearTransform(grid.voxelSize);
+  transform->postTranslate(openvdb::Vec3d(grid.origin.x, grid.origin.y, grid.origin.z));
+  vdbGrid->setTransform(transform);
+  auto accessor = vdbGrid->getAccessor();
+  for (int k = 0; k < grid.dims.z; ++k)
+    for (int j = 0; j < grid.dims.y; ++j)
+      for (int i = 0; i < grid.dims.x; ++i)
+        if (const float v = grid.at(i, j, k); v != background) accessor.setValue(openvdb::Coord(i, j, k), v);
+  io::AtomicFile out(path);
+  try {
+    openvdb::io::File file(out.tempPath());
+    file.write({vdbGrid});
+    file.close();
+  } catch (const std::exception& e) {
+    throw InputError("cannot write '" + path + "': " + e.what());
+  }
+  out.commit();
+}
+
+}  // namespace lucent::vdb

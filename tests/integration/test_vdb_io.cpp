@@ -1,0 +1,62 @@
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include <glm/geometric.hpp>
+
+#include "temp_dir.hpp"
+#include "util/error.hpp"
+#include "vdb/vdb_io.hpp"
+
+using namespace lucent;
+
+namespace {
+scene::VoxelGrid ballDensity() {
+  scene::VoxelGrid g;
+  g.dims = {12, 10, 8};
+  g.voxelSize = 0.25;
+  g.origin = {-1.5, -1.25, -1.0};
+  g.values.resize(std::size_t(12 * 10 * 8));
+  for (int k = 0; k < 8; ++k)
+    for (int j = 0; j < 10; ++j)
+      for (int i = 0; i < 12; ++i) {
+        const glm::dvec3 p = g.origin + g.voxelSize * glm::dvec3(i, j, k);
+        g.values[g.index(i, j, k)] = float(std::max(0.0, 1.0 - glm::length(p)) + 0.01 * (i + 1));
+      }
+  return g;
+}
+}  // namespace
+
+TEST_CASE("A density written to OpenVDB reads back voxel for voxel, in millimetres") {
+  test::TempDir dir;
+  const scene::VoxelGrid g = ballDensity();
+  vdb::writeFloatGrid(dir / "ball.vdb", g, "density");
+  CHECK(vdb::gridNames(dir / "ball.vdb") == std::vector<std::string>{"density"});
+  const scene::VoxelGrid back = vdb::readFloatGrid(dir / "ball.vdb", "density");
+  REQUIRE(back.dims == g.dims);  // every voxel is active: no column of the box is all background
+  CHECK(back.voxelSize == doctest::Approx(0.25));
+  CHECK(glm::length(back.origin - g.origin) < 1e-9);
+  for (std::size_t i = 0; i < g.values.size(); ++i) CHECK(back.values[i] == g.values[i]);
+  // Trilinear sampling reproduces voxel values at centres and interpolates between them.
+  CHECK(back.sample(g.origin + glm::dvec3(0.25 * 3, 0.25 * 4, 0.25 * 2)) == doctest::Approx(g.at(3, 4, 2)));
+  const double mid = back.sample(g.origin + glm::dvec3(0.25 * 3.5, 0.25 * 4, 0.25 * 2));
+  CHECK(mid == doctest::Approx(0.5 * (g.at(3, 4, 2) + g.at(4, 4, 2))));
+}
+
+TEST_CASE("OpenVDB input errors name the file, the problem and what is there") {
+  test::TempDir dir;
+  vdb::writeFloatGrid(dir / "ball.vdb", ballDensity(), "density");
+  auto message = [](auto&& f) {
+    try {
+      f();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK(message([&] { vdb::readFloatGrid(dir / "missing.vdb"); }).find("no such file") != std::string::npos);
+  CHECK(message([&] { vdb::readFloatGrid(dir / "ball.vdb", "temperature"); }).find("it holds: density") != std::string::npos);
+  { std::ofstream(dir / "text.vdb") << "not a vdb"; }
+  CHECK(message([&] { vdb::readFloatGrid(dir / "text.vdb"); }).find("as OpenVDB") != std::string::npos);
+}
