@@ -103,6 +103,8 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
       {"compare " + dir / "a.exr", "exactly two images"},
       {"compare " + dir / "a.exr " + dir / "b.exr", "no such file"},
       {"bench --sweep fraction", "must be KNOB=V1,V2"},
+      {"profile --method pathtrace --r 1,2", "give --rmax and --n"},
+      {"profile --method photon-map", "must be dipole or pathtrace"},
   };
   for (const auto& c : cases) {
     const Run r = lucentCli(c.args, dir);
@@ -158,4 +160,24 @@ TEST_CASE("bench sweeps knobs against a reference and writes a CSV row per setti
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 3);
   CHECK(contains(csv, "fraction=2"));
   CHECK(std::filesystem::file_size(dir / "b.png") > 1000);
+}
+
+TEST_CASE("profile --method pathtrace: ring CSV with standard errors, totals beside the dipole's") {
+  lucent::test::TempDir dir;
+  const Run r = lucentCli("profile --method pathtrace --material marble --rmax 5 --n 10 --photons 20000 --quiet", dir);
+  REQUIRE(r.code == 0);
+  std::istringstream lines(r.out);
+  std::string line;
+  std::getline(lines, line);
+  CHECK(line == "r_mm,R,G,B,R_se,G_se,B_se");
+  int rows = 0;
+  while (std::getline(lines, line)) {
+    double v[7];
+    REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &v[6]) == 7);
+    CHECK(v[0] == doctest::Approx(0.25 + 0.5 * rows));
+    for (int k = 1; k < 7; ++k) CHECK(v[k] >= 0);
+    ++rows;
+  }
+  CHECK(rows == 10);
+  CHECK(contains(r.err, "total diffuse reflectance R: Monte Carlo"));
 }
