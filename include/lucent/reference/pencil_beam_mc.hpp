@@ -16,6 +16,7 @@
 
 #include "../optics/fresnel.hpp"
 #include "../optics/phase_hg.hpp"
+#include "../util/basis.hpp"
 #include "../util/parallel.hpp"
 #include "../util/rng.hpp"
 
@@ -53,9 +54,8 @@ inline glm::dvec3 scatterHG(const glm::dvec3& d, double g, util::Rng& rng) {
   const double cosT = optics::sampleCosThetaHG(rng.uniform(), g);
   const double sinT = std::sqrt(std::max(0.0, 1 - cosT * cosT));
   const double phi = 2 * optics::kPi * rng.uniform();
-  // A basis around d (Duff et al. 2017).
-  const double sign = std::copysign(1.0, d.z), a = -1.0 / (sign + d.z), b = d.x * d.y * a;
-  const glm::dvec3 t(1.0 + sign * d.x * d.x * a, sign * b, -sign * d.x), u(b, sign + d.y * d.y * a, -d.y);
+  glm::dvec3 t, u;
+  util::orthonormalBasis(d, t, u);
   return glm::normalize(sinT * std::cos(phi) * t + sinT * std::sin(phi) * u + cosT * d);
 }
 

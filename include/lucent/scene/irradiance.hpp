@@ -11,6 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "../optics/fresnel.hpp"
+#include "../util/basis.hpp"
 #include "light.hpp"
 #include "ray_caster.hpp"
 
@@ -33,14 +34,6 @@ inline double hashToUnit(std::uint64_t x) {
   return double(x >> 11) * (1.0 / 9007199254740992.0);
 }
 
-inline void orthonormalBasis(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
-  // Duff et al. 2017, "Building an Orthonormal Basis, Revisited".
-  const double sign = std::copysign(1.0, n.z);
-  const double a = -1.0 / (sign + n.z);
-  const double bb = n.x * n.y * a;
-  t = glm::dvec3(1.0 + sign * n.x * n.x * a, sign * bb, -sign * n.x);
-  b = glm::dvec3(bb, sign + n.y * n.y * a, -n.y);
-}
 }  // namespace detail
 
 /// @param point surface position (mm); @param normal shading normal; @param faceNormal geometric normal
@@ -71,7 +64,7 @@ inline glm::dvec3 irradianceAt(const glm::dvec3& point, const glm::dvec3& normal
     } else if (const auto* env = std::get_if<EnvironmentLight>(&light)) {
       // Cosine-weighted stratified directions: pdf = cos/pi, so E ~= (pi/N) sum L Ft.
       glm::dvec3 t, b;
-      detail::orthonormalBasis(normal, t, b);
+      util::orthonormalBasis(normal, t, b);
       const int k = std::max(1, settings.environmentStrata);
       glm::dvec3 sum(0);
       for (int i = 0; i < k; ++i)
