@@ -5,9 +5,10 @@
 namespace lucent::render {
 
 Method referenceMethod();
+Method jensenBuhlerMethod();
 
 const std::vector<Method>& methods() {
-  static const std::vector<Method> all{referenceMethod()};
+  static const std::vector<Method> all{referenceMethod(), jensenBuhlerMethod()};
   return all;
 }
 

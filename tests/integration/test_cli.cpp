@@ -105,6 +105,7 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
       {"bench --sweep fraction", "must be KNOB=V1,V2"},
       {"profile --method pathtrace --r 1,2", "give --rmax and --n"},
       {"profile --method photon-map", "must be dipole or pathtrace"},
+      {"render --out " + out + " --method jensen-buhler --knob epsilon=-1", "epsilon must be >= 0"},
   };
   for (const auto& c : cases) {
     const Run r = lucentCli(c.args, dir);
@@ -133,6 +134,18 @@ TEST_CASE("render writes EXR, PNG and stats; compare of an image with itself rep
   REQUIRE(c.code == 0);
   CHECK(contains(c.out, "\"rmse_tonemapped\": 0"));
   CHECK(contains(c.out, "\"relative_rms\": 0"));
+  // The hierarchical method on the same scene: close to the truth, and its knob is recorded.
+  const Run jb = lucentCli("render --shape sphere --size-mm 10 --width 32 --height 32 --quiet --method jensen-buhler "
+                           "--knob epsilon=0.05 --out " + dir / "jb.exr --stats " + dir / "jb.json", dir);
+  REQUIRE(jb.code == 0);
+  CHECK(contains(slurp(dir / "jb.json"), "\"epsilon\": \"0.05\""));
+  const Run cj = lucentCli("compare --json " + dir / "jb.exr " + dir / "a.exr", dir);
+  REQUIRE(cj.code == 0);
+  double rel = 1;
+  const auto at = cj.out.find("\"relative_rms\": ");
+  REQUIRE(at != std::string::npos);
+  rel = std::atof(cj.out.c_str() + at + 16);
+  CHECK(rel < 0.02);
 }
 
 TEST_CASE("materials lists every measured material; every command has --help") {

@@ -5,6 +5,7 @@
 #include <lucent/image/metrics.hpp>
 #include <lucent/optics/materials.hpp>
 #include <lucent/reference/dipole_truth.hpp>
+#include <lucent/reference/jensen_buhler.hpp>
 #include <lucent/scene/shapes.hpp>
 
 #include "raycast/embree_ray_caster.hpp"
@@ -179,4 +180,28 @@ TEST_CASE("Environment light: a uniform sky gives E = 2 pi L int_0^1 Ft(mu) mu d
   INFO("mean E " << mean.x << " " << mean.y << " " << mean.z << ", expected " << 2 * expectedPerUnit);
   CHECK(mean.x == doctest::Approx(2.0 * expectedPerUnit).epsilon(0.01));
   CHECK(mean.z == doctest::Approx(0.5 * expectedPerUnit).epsilon(0.01));
+}
+
+TEST_CASE("Jensen-Buhler: epsilon = 0 is the exact sum; the error shrinks with epsilon") {
+  const SmallScene s(scene::shapes::torus(), 20.0, 40);
+  const auto d = dipoleOf<double>("skin1");
+  const auto samples = reference::buildSurfaceSamples(s.mesh, 0.5 * d.minMeanFreePath());
+  const reference::DipoleTruth<double> truth(samples, d, s.lights, *s.caster, s.irr, util::tbbFor);
+  const auto hits = reference::primaryHits(s.camera, s.mesh, s.normals, *s.caster, util::tbbFor);
+  const image::Image exact = reference::renderTruth(truth, s.camera, hits, util::tbbFor);
+
+  const reference::JensenBuhlerTree<double> zero(truth, 0.0);
+  for (const glm::dvec3 p : {glm::dvec3(1, 2, 3), glm::dvec3(0), glm::dvec3(-5, 0.5, 1)}) {
+    const glm::dvec3 a = zero.radiosity(p), b = truth.radiosity(p);
+    for (int c = 0; c < 3; ++c) CHECK(a[c] == doctest::Approx(b[c]).epsilon(1e-12));
+  }
+  std::vector<double> errors;
+  for (double eps : {0.5, 0.1, 0.02}) {
+    const reference::JensenBuhlerTree<double> tree(truth, eps);
+    errors.push_back(image::compareImages(reference::renderTruth(tree, s.camera, hits, util::tbbFor), exact).relativeRms);
+  }
+  INFO("relative RMS at epsilon 0.5, 0.1, 0.02: " << errors[0] << " " << errors[1] << " " << errors[2]);
+  CHECK(errors[0] > errors[1]);
+  CHECK(errors[1] > errors[2]);
+  CHECK(errors[2] < 0.01);
 }

@@ -80,6 +80,7 @@ class DipoleTruth {
       const glm::dvec3& w = weighted[i];
       if (!(w.x > 0 || w.y > 0 || w.z > 0)) continue;
       mStats.transmittedPower += w;
+      mArea.push_back(samples.area[i]);
       mX.push_back(T(samples.position[i].x));
       mY.push_back(T(samples.position[i].y));
       mZ.push_back(T(samples.position[i].z));
@@ -109,6 +110,13 @@ class DipoleTruth {
   }
 
   const Stats& stats() const { return mStats; }
+  const optics::Dipole<T>& dipole() const { return mDipole; }
+
+  /// The lit samples, structure-of-arrays: positions, E_i A_i per channel, and areas A_i.
+  std::size_t litCount() const { return mX.size(); }
+  glm::dvec3 litPosition(std::size_t i) const { return {double(mX[i]), double(mY[i]), double(mZ[i])}; }
+  glm::dvec3 litPower(std::size_t i) const { return {double(mW[0][i]), double(mW[1][i]), double(mW[2][i])}; }
+  double litArea(std::size_t i) const { return mArea[i]; }
 
  private:
   glm::dvec3 radiosityFloatKernel(const glm::dvec3& xo) const {
@@ -121,6 +129,7 @@ class DipoleTruth {
   optics::Dipole<T> mDipole;
   RdKernelConstants mKernel = RdKernelConstants::from(mDipole);
   std::vector<T> mX, mY, mZ, mW[3];
+  std::vector<double> mArea;
   Stats mStats;
 };
 
@@ -155,9 +164,10 @@ inline std::vector<std::optional<ShadingPoint>> primaryHits(const scene::Pinhole
   return hits;
 }
 
-/// Renders the truth: radiance in RGB, coverage in A.
-template <class T>
-image::Image renderTruth(const DipoleTruth<T>& truth, const scene::PinholeCamera& camera,
+/// Renders any evaluator with radiance(xo, cosOut) (the truth, or an approximation of its sum):
+/// radiance in RGB, coverage in A.
+template <class Evaluator>
+image::Image renderTruth(const Evaluator& truth, const scene::PinholeCamera& camera,
                          const std::vector<std::optional<ShadingPoint>>& hits, const util::ParallelFor& parallelFor,
                          const util::Progress& progress = {}) {
   image::Image img(camera.width, camera.height);
