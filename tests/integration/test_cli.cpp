@@ -40,6 +40,24 @@ Run lucentCli(const std::string& args, const lucent::test::TempDir& dir) {
 
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
+/// The numeric rows of a CSV the CLI printed, after checking its header; every row must have `columns` numbers.
+std::vector<std::vector<double>> csvRows(const std::string& text, const std::string& header, std::size_t columns) {
+  std::istringstream lines(text);
+  std::string line;
+  std::getline(lines, line);
+  CHECK(line == header);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(lines, line)) {
+    std::vector<double> row;
+    std::istringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) row.push_back(std::stod(cell));
+    REQUIRE(row.size() == columns);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
 // Jensen et al. 2001's dipole, typed in again from the paper (not from lucent's headers).
 double jensenRd(double r, double sigmaA, double sigmaSp, double eta) {
   const double pi = 3.14159265358979323846;
@@ -56,19 +74,11 @@ TEST_CASE("lucent profile --material skin1 --r 0,0.1,1,10 matches Jensen 2001 to
   lucent::test::TempDir dir;
   const Run r = lucentCli("profile --material skin1 --r 0,0.1,1,10", dir);
   REQUIRE(r.code == 0);
-  std::istringstream lines(r.out);
-  std::string line;
-  std::getline(lines, line);
-  CHECK(line == "r_mm,R,G,B");
   const double sa[3] = {0.032, 0.17, 0.48}, ss[3] = {0.74, 0.88, 1.01};
-  int rows = 0;
-  while (std::getline(lines, line)) {
-    double v[4];
-    REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3]) == 4);
+  const auto rows = csvRows(r.out, "r_mm,R,G,B", 4);
+  for (const auto& v : rows)
     for (int c = 0; c < 3; ++c) CHECK(v[c + 1] == doctest::Approx(jensenRd(v[0], sa[c], ss[c], 1.3)).epsilon(1e-6));
-    ++rows;
-  }
-  CHECK(rows == 4);
+  CHECK(rows.size() == 4);
 }
 
 TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, nothing written") {
@@ -179,18 +189,11 @@ TEST_CASE("profile --method pathtrace: ring CSV with standard errors, totals bes
   lucent::test::TempDir dir;
   const Run r = lucentCli("profile --method pathtrace --material marble --rmax 5 --n 10 --photons 20000 --quiet", dir);
   REQUIRE(r.code == 0);
-  std::istringstream lines(r.out);
-  std::string line;
-  std::getline(lines, line);
-  CHECK(line == "r_mm,R,G,B,R_se,G_se,B_se");
-  int rows = 0;
-  while (std::getline(lines, line)) {
-    double v[7];
-    REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &v[6]) == 7);
-    CHECK(v[0] == doctest::Approx(0.25 + 0.5 * rows));
-    for (int k = 1; k < 7; ++k) CHECK(v[k] >= 0);
-    ++rows;
+  const auto rows = csvRows(r.out, "r_mm,R,G,B,R_se,G_se,B_se", 7);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    CHECK(rows[i][0] == doctest::Approx(0.25 + 0.5 * double(i)));
+    for (int k = 1; k < 7; ++k) CHECK(rows[i][k] >= 0);
   }
-  CHECK(rows == 10);
+  CHECK(rows.size() == 10);
   CHECK(contains(r.err, "total diffuse reflectance R: Monte Carlo"));
 }

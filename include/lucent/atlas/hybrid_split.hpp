@@ -32,18 +32,18 @@ inline double importance(const optics::DipoleChannel<double>& ch, double r) { re
 inline double importanceRadius(const optics::DipoleChannel<double>& ch, double c) {
   if (!(c > 0)) throw std::invalid_argument("importance bound c must be > 0");
   if (ch.alphaPrime <= 0) return 0;
-  // Past the peak (well beyond it at a few z_v), walk outwards until the importance is below c.
-  double lo = 0, hi = 4 * ch.zv;
-  double peak = 0;
-  for (int i = 1; i <= 400; ++i) peak = std::max(peak, importance(ch, hi * i / 400.0));
+  // The importance rises from 0 to one peak (on the scale of z_r, well inside 4 z_v) and then falls:
+  // the last crossing lies beyond the peak. Bracket it by doubling outwards from the peak, then bisect.
+  const double scanEnd = 4 * ch.zv;
+  double lo = 0, peak = 0;
+  for (int i = 1; i <= 400; ++i) {
+    const double r = scanEnd * i / 400.0, f = importance(ch, r);
+    if (f > peak) peak = f, lo = r;
+  }
   if (peak < c) return 0;
+  double hi = 2 * lo;
   for (int i = 0; i < 200 && importance(ch, hi) >= c; ++i) lo = hi, hi *= 2;
   if (importance(ch, hi) >= c) return hi;  // unreachable for finite c; bounded all the same
-  // lo may sit before the peak; the crossing we want is the last one, in the decreasing tail below hi.
-  if (lo == 0 || importance(ch, lo) < c) {
-    lo = hi / 2;
-    while (lo > 1e-12 && importance(ch, lo) < c) lo /= 2;
-  }
   for (int i = 0; i < 200 && hi - lo > 1e-12 * hi; ++i) {
     const double mid = 0.5 * (lo + hi);
     (importance(ch, mid) >= c ? lo : hi) = mid;
