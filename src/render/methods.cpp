@@ -6,9 +6,13 @@ namespace lucent::render {
 
 Method referenceMethod();
 Method jensenBuhlerMethod();
+Method tsisMethod();
+Method hybridMethod();
+Method tsmMethod();
 
 const std::vector<Method>& methods() {
-  static const std::vector<Method> all{referenceMethod(), jensenBuhlerMethod()};
+  static const std::vector<Method> all{referenceMethod(), jensenBuhlerMethod(), tsisMethod(), hybridMethod(),
+                                         tsmMethod()};
   return all;
 }
 

@@ -25,21 +25,25 @@ struct RdTableBound {
   T floor = T(1e-6);
 };
 
+/// A radial profile f(r) (three channels) tabulated on [0, rMax] with the bound above, taking Rd(0)
+/// as the peak the floor is relative to. Rd itself (RdTable) and the hybrid method's weighted profiles
+/// Rd Wl and Rd Wg share it, so every profile the renderer looks up obeys one stated bound.
 template <class T>
-class RdTable {
+class RadialTable {
  public:
-  /// @param dipole the profile to tabulate; @param rMax the largest distance looked up (mm), e.g. the
-  /// object's diagonal. Beyond rMax lookups return 0. @param bound the error bound to meet.
-  RdTable(const Dipole<T>& dipole, T rMax, RdTableBound<T> bound = {}) : mRMax(rMax), mBound(bound) {
+  /// @param profile callable T -> Rgb<T>, finite and >= 0 on [0, rMax]; @param rMax the largest distance
+  /// looked up (mm), e.g. the object's diagonal. Beyond rMax lookups return 0.
+  template <class Profile>
+  RadialTable(const Profile& profile, T rMax, RdTableBound<T> bound = {}) : mRMax(rMax), mBound(bound) {
     if (!(rMax > T(0)) || !std::isfinite(double(rMax)))
       throw std::invalid_argument("RdTable: rMax must be positive and finite");
     for (std::size_t n = 64;; n *= 2) {
-      build(dipole, n);
-      if (meetsBound(dipole) || n >= kMaxNodes) break;
+      build(profile, n);
+      if (meetsBound(profile) || n >= kMaxNodes) break;
     }
   }
 
-  /// Interpolated Rd(r) for all channels; 0 beyond rMax.
+  /// Interpolated f(r) for all channels; 0 beyond rMax.
   Rgb<T> operator()(T r) const {
     if (!(r >= T(0)) || r > mRMax) return Rgb<T>(0);
     const T u = std::sqrt(r / mRMax) * T(mValues.size() - 1);
@@ -64,19 +68,21 @@ class RdTable {
     return mRMax * s * s;
   }
 
-  void build(const Dipole<T>& dipole, std::size_t n) {
+  template <class Profile>
+  void build(const Profile& profile, std::size_t n) {
     mValues.resize(n);
-    for (std::size_t i = 0; i < n; ++i) mValues[i] = dipole.rd(nodeRadius(i, n));
+    for (std::size_t i = 0; i < n; ++i) mValues[i] = profile(nodeRadius(i, n));
   }
 
-  bool meetsBound(const Dipole<T>& dipole) {
+  template <class Profile>
+  bool meetsBound(const Profile& profile) {
     const std::size_t n = mValues.size();
-    const Rgb<T> peak = dipole.rd(T(0));
+    const Rgb<T> peak = profile(T(0));
     for (std::size_t i = 0; i + 1 < n; ++i) {
       // Midpoint in the table's own coordinate u, where linear interpolation errs the most.
       const T s = (T(i) + T(0.5)) / T(n - 1);
       const T r = mRMax * s * s;
-      const Rgb<T> exact = dipole.rd(r);
+      const Rgb<T> exact = profile(r);
       const Rgb<T> approx = (mValues[i] + mValues[i + 1]) * T(0.5);
       for (int c = 0; c < kChannels; ++c) {
         // Half the bound at the midpoint leaves room for the rest of the interval, where the error of
@@ -96,6 +102,14 @@ class RdTable {
   RdTableBound<T> mBound;
   std::vector<Rgb<T>> mValues;
   bool mSaturated = false;
+};
+
+/// Rd(r) of a dipole, tabulated.
+template <class T>
+class RdTable : public RadialTable<T> {
+ public:
+  RdTable(const Dipole<T>& dipole, T rMax, RdTableBound<T> bound = {})
+      : RadialTable<T>([&dipole](T r) { return dipole.rd(r); }, rMax, bound) {}
 };
 
 }  // namespace lucent::optics

@@ -10,6 +10,7 @@
 #include <limits>
 #include <optional>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -137,7 +138,17 @@ class DipoleTruth {
 struct ShadingPoint {
   glm::dvec3 position;
   double cosOut = 0;  ///< n . (direction to the eye), clamped to [0, 1]
+  std::uint32_t triangle = 0;
+  double u = 0, v = 0;  ///< barycentrics of the triangle's vertices 1 and 2 (for per-vertex shading)
 };
+
+/// Whether an evaluator shades from the whole ShadingPoint (e.g. per-vertex interpolation) rather than
+/// from (position, cosOut).
+template <class E, class = void>
+struct ShadesPoints : std::false_type {};
+template <class E>
+struct ShadesPoints<E, std::void_t<decltype(std::declval<const E&>().radiance(std::declval<const ShadingPoint&>()))>>
+    : std::true_type {};
 
 /// The first surface hit through each pixel centre, or nothing (background).
 inline std::vector<std::optional<ShadingPoint>> primaryHits(const scene::PinholeCamera& camera,
@@ -158,7 +169,7 @@ inline std::vector<std::optional<ShadingPoint>> primaryHits(const scene::Pinhole
       const double len = glm::length(n);
       n = len > 0 ? n / len : glm::normalize(mesh.areaVector(hit->triangle));
       const double cosOut = std::clamp(-glm::dot(n, ray.direction), 0.0, 1.0);
-      hits[i] = ShadingPoint{ray.origin + hit->t * ray.direction, cosOut};
+      hits[i] = ShadingPoint{ray.origin + hit->t * ray.direction, cosOut, hit->triangle, hit->u, hit->v};
     }
   });
   return hits;
@@ -178,7 +189,9 @@ image::Image renderTruth(const Evaluator& truth, const scene::PinholeCamera& cam
       for (int x = 0; x < camera.width; ++x) {
         const auto& hit = hits[y * camera.width + x];
         if (!hit) continue;
-        const glm::dvec3 l = truth.radiance(hit->position, hit->cosOut);
+        glm::dvec3 l;
+        if constexpr (ShadesPoints<Evaluator>::value) l = truth.radiance(*hit);
+        else l = truth.radiance(hit->position, hit->cosOut);
         img.at(x, int(y)) = glm::vec4(glm::vec3(l), 1.0f);
       }
       if (progress) progress(double(++done) / double(rows));
