@@ -1,6 +1,7 @@
 /// `lucent bench`: the accuracy-cost harness. Renders one scene with a reference setting and with every
 /// setting of a knob sweep, measures wall time and memory, computes each image's error against the
 /// reference, and writes a CSV table and a PNG chart of error against time.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -37,6 +38,20 @@ std::pair<std::string, std::vector<std::string>> parseSweep(const Args& args, co
   return {text.substr(0, eq), values};
 }
 
+/// Time the baseline needs for `error`, by log-log interpolation between the baseline's settings sorted
+/// by error (NaN outside their range: no extrapolation).
+double baselineTimeAtError(std::vector<std::pair<double, double>> errorTime, double error) {
+  std::sort(errorTime.begin(), errorTime.end());
+  for (std::size_t i = 0; i + 1 < errorTime.size(); ++i) {
+    const auto [e0, t0] = errorTime[i];
+    const auto [e1, t1] = errorTime[i + 1];
+    if (error < e0 || error > e1 || !(e0 > 0) || !(e1 > e0)) continue;
+    const double f = std::log(error / e0) / std::log(e1 / e0);
+    return std::exp(std::log(t0) + f * std::log(t1 / t0));
+  }
+  return std::nan("");
+}
+
 std::map<std::string, std::string> knobArgs(const Args& args, const std::string& option) {
   std::map<std::string, std::string> out;
   for (const auto& k : args.all(option))
@@ -52,6 +67,8 @@ int runBench(int argc, char** argv) {
   specs.push_back({"sweep", "KNOB=V1,V2,...", "values of one knob; several --sweep give their product (default for reference: fraction=2,1,0.5,0.25)", true});
   specs.push_back({"reference-method", "NAME", "method of the reference image (default reference)"});
   specs.push_back({"reference-knob", "NAME=VALUE", "knob of the reference (default for reference: fraction=0.125)", true});
+  specs.push_back({"baseline-method", "NAME", "also sweep a baseline method and report each setting's speed-up at equal error"});
+  specs.push_back({"baseline-sweep", "KNOB=V1,V2,...", "the baseline's settings (e.g. epsilon=3,1,0.3,0.1 for jensen-buhler)", true});
   specs.push_back({"csv", "FILE", "write the table as CSV"});
   specs.push_back({"plot", "FILE.png", "chart of error (relative RMS) against time"});
   specs.push_back({"quiet", "", "no progress bars"});
@@ -105,23 +122,59 @@ int runBench(int argc, char** argv) {
                     image::compareImages(r.image, ref.image)});
   }
 
+  // Baseline curve (error -> time), measured in the same run, for speed-ups at equal error.
+  std::vector<Row> baseline;
+  std::vector<std::pair<double, double>> baselineCurve;
+  if (args.has("baseline-method")) {
+    const render::Method& bm = render::findMethod(args.get("baseline-method"));
+    std::vector<std::map<std::string, std::string>> bcombos{{}};
+    for (const auto& text : args.all("baseline-sweep")) {
+      const auto [name, values] = parseSweep(args, text);
+      std::vector<std::map<std::string, std::string>> next;
+      for (const auto& c : bcombos)
+        for (const auto& v : values) {
+          auto k = c;
+          k[name] = v;
+          next.push_back(k);
+        }
+      bcombos.swap(next);
+    }
+    for (const auto& c : bcombos) {
+      const render::Knobs k(bm.knobs, c, bm.name);
+      std::fprintf(stderr, "lucent bench: baseline %s (%s)\n", bm.name.c_str(), k.summary(true).c_str());
+      const render::RenderResult r = bm.run(scene, k, progress);
+      baseline.push_back({bm.name, k.summary(), k.summary(true), r.seconds, peakMemoryMiB(), r.figures,
+                          image::compareImages(r.image, ref.image)});
+      baselineCurve.push_back({baseline.back().errors.relativeRms, r.seconds});
+    }
+  }
+
   std::ostringstream csv;
-  csv << "method,knobs,seconds,peak_memory_mib,spacing_mm,surface_samples,rmse_tonemapped,relative_rms,max_abs_error,"
-         "speedup_vs_reference\n";
+  csv << "method,knobs,seconds,frame_seconds,samples,peak_memory_mib,spacing_mm,surface_samples,rmse_tonemapped,"
+         "relative_rms,max_abs_error,speedup_vs_reference,speedup_at_equal_error\n";
   auto fig = [](const std::map<std::string, double>& f, const char* k) {
     const auto it = f.find(k);
     return it == f.end() ? std::nan("") : it->second;
   };
   std::printf("reference: %s (%s), %.2f s, %.0f samples\n", refMethod.name.c_str(), refKnobs.summary(true).c_str(),
               ref.seconds, fig(ref.figures, "surface_samples"));
-  std::printf("%-48s %9s %9s %11s %12s %12s %8s\n", "knobs", "seconds", "spacing", "samples", "rmse_tone", "rel_rms", "speedup");  // speedup: reference time / this time
-  for (const Row& r : rows) {
-    csv << r.method << ",\"" << r.knobs << "\"," << r.seconds << "," << r.memory << "," << fig(r.figures, "spacing_mm")
-        << "," << fig(r.figures, "surface_samples") << "," << r.errors.rmseToneMapped << "," << r.errors.relativeRms
-        << "," << r.errors.maxAbsError << "," << ref.seconds / r.seconds << "\n";
-    std::printf("%-48s %9.3f %9.4g %11.0f %12.3e %12.3e %8.1f\n", r.changedKnobs.c_str(), r.seconds, fig(r.figures, "spacing_mm"),
-                fig(r.figures, "surface_samples"), r.errors.rmseToneMapped, r.errors.relativeRms, ref.seconds / r.seconds);
-  }
+  // speedup: reference time / this time; at equal error: the baseline's interpolated time / this time.
+  std::printf("%-40s %9s %9s %9s %11s %12s %12s %8s %9s\n", "knobs", "seconds", "frame_s", "spacing", "samples",
+              "rmse_tone", "rel_rms", "speedup", "eq_error");
+  auto emit = [&](const Row& r, bool isBaseline) {
+    const double eq = isBaseline ? std::nan("") : baselineTimeAtError(baselineCurve, r.errors.relativeRms) / r.seconds;
+    const double samples = r.figures.count("samples") ? fig(r.figures, "samples") : fig(r.figures, "surface_samples");
+    csv << r.method << ",\"" << r.knobs << "\"," << r.seconds << "," << fig(r.figures, "frame_seconds") << "," << samples
+        << "," << r.memory << "," << fig(r.figures, "spacing_mm") << "," << fig(r.figures, "surface_samples") << ","
+        << r.errors.rmseToneMapped << "," << r.errors.relativeRms << "," << r.errors.maxAbsError << ","
+        << ref.seconds / r.seconds << "," << eq << "\n";
+    std::printf("%-40s %9.3f %9.3f %9.4g %11.0f %12.3e %12.3e %8.1f %9.1f\n",
+                ((isBaseline ? "[" + r.method + "] " : std::string()) + r.changedKnobs).c_str(), r.seconds,
+                fig(r.figures, "frame_seconds"), fig(r.figures, "spacing_mm"), samples, r.errors.rmseToneMapped,
+                r.errors.relativeRms, ref.seconds / r.seconds, eq);
+  };
+  for (const Row& r : rows) emit(r, false);
+  for (const Row& r : baseline) emit(r, true);
   if (args.has("csv")) io::writeTextFile(args.get("csv"), csv.str());
   if (args.has("plot")) {
     plot::Series s{method.name, {}, {}, {214, 39, 40}, true};
@@ -138,7 +191,13 @@ int runBench(int argc, char** argv) {
     spec.xLabel = "wall time (s)";
     spec.yLabel = "relative RMS error vs reference";
     spec.logX = spec.logY = true;
-    plot::writeLineChart(args.get("plot"), spec, {line, s});
+    std::vector<plot::Series> series{line, s};
+    if (!baseline.empty()) {
+      plot::Series b{baseline.front().method + " (baseline)", {}, {}, {31, 119, 180}, true};
+      for (const Row& r : baseline) b.x.push_back(r.seconds), b.y.push_back(r.errors.relativeRms);
+      series.push_back(b);
+    }
+    plot::writeLineChart(args.get("plot"), spec, series);
   }
   return 0;
 }

@@ -116,6 +116,11 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
       {"profile --method pathtrace --r 1,2", "give --rmax and --n"},
       {"profile --method photon-map", "must be dipole or pathtrace"},
       {"render --out " + out + " --method jensen-buhler --knob epsilon=-1", "epsilon must be >= 0"},
+      {"render --out " + out + " --method tsis --knob sampler=cdf", "sampler must be mip or row"},
+      {"render --out " + out + " --method tsis --knob samples=0", "samples must be an integer in"},
+      {"render --out " + out + " --method tsis --knob eval=face", "eval must be pixel or vertex"},
+      {"render --out " + out + " --method hybrid --knob c=0", "c must be > 0"},
+      {"render --out " + out + " --method tsm --knob L=0", "L must be an integer in"},
   };
   for (const auto& c : cases) {
     const Run r = lucentCli(c.args, dir);
@@ -169,6 +174,22 @@ TEST_CASE("materials lists every measured material; every command has --help") {
     const Run h = lucentCli(std::string(cmd) + " --help", dir);
     CHECK(h.code == 0);
     CHECK(contains(h.out, "usage: lucent"));
+  }
+}
+
+TEST_CASE("render --method tsis|hybrid|tsm: images and per-stage timings") {
+  lucent::test::TempDir dir;
+  for (const std::string method : {"tsis", "hybrid", "tsm"}) {
+    const std::string stats = dir / (method + ".json");
+    const Run r = lucentCli("render --shape sphere --size-mm 10 --width 24 --height 24 --quiet --method " + method +
+                                " --knob eval=vertex --out " + dir / (method + ".exr") + " --stats " + stats,
+                            dir);
+    INFO(method << ": " << r.err);
+    REQUIRE(r.code == 0);
+    const std::string json = slurp(stats);
+    CHECK(contains(json, "\"frame_seconds\""));
+    CHECK(contains(json, "\"eval\": \"vertex\""));
+    CHECK(std::filesystem::file_size(dir / (method + ".exr")) > 100);
   }
 }
 
