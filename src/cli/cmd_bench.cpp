@@ -71,6 +71,7 @@ int runBench(int argc, char** argv) {
   specs.push_back({"baseline-sweep", "KNOB=V1,V2,...", "the baseline's settings (e.g. epsilon=3,1,0.3,0.1 for jensen-buhler)", true});
   specs.push_back({"csv", "FILE", "write the table as CSV"});
   specs.push_back({"plot", "FILE.png", "chart of error (relative RMS) against time"});
+  specs.push_back({"plot-x", "seconds|samples", "x axis of the chart (default seconds)"});
   specs.push_back({"quiet", "", "no progress bars"});
   Args args("bench", "lucent bench [scene options] [--method NAME --sweep KNOB=V1,V2,...] [--csv FILE] [--plot FILE.png]", specs);
   args.parse(argc, argv, 2);
@@ -79,6 +80,8 @@ int runBench(int argc, char** argv) {
     return 0;
   }
   if (!args.positional().empty()) args.fail("unexpected argument '" + args.positional().front() + "'");
+  const std::string xAxis = args.get("plot-x", "seconds");
+  if (xAxis != "seconds" && xAxis != "samples") args.fail("--plot-x must be seconds or samples, not '" + xAxis + "'");
   const render::Method& method = render::findMethod(args.get("method", "reference"));
   const render::Method& refMethod = render::findMethod(args.get("reference-method", "reference"));
   std::vector<std::pair<std::string, std::vector<std::string>>> sweeps;
@@ -150,7 +153,7 @@ int runBench(int argc, char** argv) {
   }
 
   std::ostringstream csv;
-  csv << "method,knobs,seconds,frame_seconds,samples,peak_memory_mib,spacing_mm,surface_samples,rmse_tonemapped,"
+  csv << "method,knobs,seconds,frame_seconds,evaluation_seconds,samples,peak_memory_mib,spacing_mm,surface_samples,rmse_tonemapped,"
          "relative_rms,max_abs_error,speedup_vs_reference,speedup_at_equal_error\n";
   auto fig = [](const std::map<std::string, double>& f, const char* k) {
     const auto it = f.find(k);
@@ -159,27 +162,31 @@ int runBench(int argc, char** argv) {
   std::printf("reference: %s (%s), %.2f s, %.0f samples\n", refMethod.name.c_str(), refKnobs.summary(true).c_str(),
               ref.seconds, fig(ref.figures, "surface_samples"));
   // speedup: reference time / this time; at equal error: the baseline's interpolated time / this time.
-  std::printf("%-40s %9s %9s %9s %11s %12s %12s %8s %9s\n", "knobs", "seconds", "frame_s", "spacing", "samples",
-              "rmse_tone", "rel_rms", "speedup", "eq_error");
+  std::printf("%-40s %9s %9s %9s %9s %11s %12s %12s %8s %9s\n", "knobs", "seconds", "frame_s", "eval_s", "spacing",
+              "samples", "rmse_tone", "rel_rms", "speedup", "eq_error");
   auto emit = [&](const Row& r, bool isBaseline) {
     const double eq = isBaseline ? std::nan("") : baselineTimeAtError(baselineCurve, r.errors.relativeRms) / r.seconds;
     const double samples = r.figures.count("samples") ? fig(r.figures, "samples") : fig(r.figures, "surface_samples");
-    csv << r.method << ",\"" << r.knobs << "\"," << r.seconds << "," << fig(r.figures, "frame_seconds") << "," << samples
+    csv << r.method << ",\"" << r.knobs << "\"," << r.seconds << "," << fig(r.figures, "frame_seconds") << "," << fig(r.figures, "evaluation_seconds") << "," << samples
         << "," << r.memory << "," << fig(r.figures, "spacing_mm") << "," << fig(r.figures, "surface_samples") << ","
         << r.errors.rmseToneMapped << "," << r.errors.relativeRms << "," << r.errors.maxAbsError << ","
         << ref.seconds / r.seconds << "," << eq << "\n";
-    std::printf("%-40s %9.3f %9.3f %9.4g %11.0f %12.3e %12.3e %8.1f %9.1f\n",
+    std::printf("%-40s %9.3f %9.3f %9.3f %9.4g %11.0f %12.3e %12.3e %8.1f %9.2f\n",
                 ((isBaseline ? "[" + r.method + "] " : std::string()) + r.changedKnobs).c_str(), r.seconds,
-                fig(r.figures, "frame_seconds"), fig(r.figures, "spacing_mm"), samples, r.errors.rmseToneMapped,
+                fig(r.figures, "frame_seconds"), fig(r.figures, "evaluation_seconds"), fig(r.figures, "spacing_mm"), samples, r.errors.rmseToneMapped,
                 r.errors.relativeRms, ref.seconds / r.seconds, eq);
   };
   for (const Row& r : rows) emit(r, false);
   for (const Row& r : baseline) emit(r, true);
   if (args.has("csv")) io::writeTextFile(args.get("csv"), csv.str());
   if (args.has("plot")) {
+    auto xOf = [&](const Row& r) {
+      if (xAxis == "seconds") return r.seconds;
+      return r.figures.count("samples") ? fig(r.figures, "samples") : fig(r.figures, "surface_samples");
+    };
     plot::Series s{method.name, {}, {}, {214, 39, 40}, true};
     for (const Row& r : rows) {
-      s.x.push_back(r.seconds);
+      s.x.push_back(xOf(r));
       s.y.push_back(r.errors.relativeRms);
     }
     plot::Series line = s;
@@ -188,13 +195,13 @@ int runBench(int argc, char** argv) {
     plot::ChartSpec spec;
     spec.title = "Error against time: " + scene.meshName + ", " + scene.material.name + ", " +
                  std::to_string(int(std::lround(scene.sizeMm))) + " mm";
-    spec.xLabel = "wall time (s)";
+    spec.xLabel = xAxis == "seconds" ? "wall time (s)" : "samples";
     spec.yLabel = "relative RMS error vs reference";
     spec.logX = spec.logY = true;
     std::vector<plot::Series> series{line, s};
     if (!baseline.empty()) {
       plot::Series b{baseline.front().method + " (baseline)", {}, {}, {31, 119, 180}, true};
-      for (const Row& r : baseline) b.x.push_back(r.seconds), b.y.push_back(r.errors.relativeRms);
+      for (const Row& r : baseline) b.x.push_back(xOf(r)), b.y.push_back(r.errors.relativeRms);
       series.push_back(b);
     }
     plot::writeLineChart(args.get("plot"), spec, series);

@@ -117,6 +117,7 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
       {"profile --method photon-map", "must be dipole or pathtrace"},
       {"render --out " + out + " --method jensen-buhler --knob epsilon=-1", "epsilon must be >= 0"},
       {"render --out " + out + " --method tsis --knob sampler=cdf", "sampler must be mip or row"},
+      {"bench --plot-x time", "--plot-x must be seconds or samples"},
       {"render --out " + out + " --method tsis --knob samples=0", "samples must be an integer in"},
       {"render --out " + out + " --method tsis --knob eval=face", "eval must be pixel or vertex"},
       {"render --out " + out + " --method hybrid --knob c=0", "c must be > 0"},
@@ -204,6 +205,20 @@ TEST_CASE("bench sweeps knobs against a reference and writes a CSV row per setti
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 3);
   CHECK(contains(csv, "fraction=2"));
   CHECK(std::filesystem::file_size(dir / "b.png") > 1000);
+}
+
+TEST_CASE("bench with a baseline sweep reports the speed-up at equal error") {
+  lucent::test::TempDir dir;
+  const Run b = lucentCli("bench --shape sphere --size-mm 5 --width 24 --height 24 --quiet --method tsis --sweep samples=64,4096 "
+                          "--reference-knob fraction=0.5 --baseline-method jensen-buhler --baseline-sweep epsilon=3,1,0.3,0.1,0.03,0 "
+                          "--csv " + dir / "b.csv",
+                          dir);
+  INFO(b.err);
+  REQUIRE(b.code == 0);
+  const std::string csv = slurp(dir / "b.csv");
+  CHECK(contains(csv, "speedup_at_equal_error"));
+  CHECK(std::count(csv.begin(), csv.end(), '\n') == 1 + 2 + 6);
+  CHECK(contains(csv, "jensen-buhler"));
 }
 
 TEST_CASE("profile --method pathtrace: ring CSV with standard errors, totals beside the dipole's") {
