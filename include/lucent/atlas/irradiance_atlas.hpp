@@ -56,11 +56,8 @@ inline IrradianceAtlas renderIrradianceAtlas(const TextureAtlas& atlas, const sc
     const auto& tri = mesh.triangles[t];
     p = w.x * glm::dvec3(mesh.positions[tri.x]) + w.y * glm::dvec3(mesh.positions[tri.y]) +
         w.z * glm::dvec3(mesh.positions[tri.z]);
-    n = w.x * glm::dvec3(vertexNormals[tri.x]) + w.y * glm::dvec3(vertexNormals[tri.y]) +
-        w.z * glm::dvec3(vertexNormals[tri.z]);
+    n = scene::shadingNormal(mesh, vertexNormals, t, w);
     fn = glm::normalize(mesh.areaVector(t));
-    const double len = glm::length(n);
-    n = len > 0 ? n / len : fn;
   };
 
   std::atomic<std::size_t> done{0};

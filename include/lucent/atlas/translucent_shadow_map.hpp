@@ -65,12 +65,9 @@ class TranslucentShadowMap {
           const glm::dvec3 origin = q - 2 * radius * mAxis;
           const auto hit = caster.intersect(origin, mAxis, 0, 4 * radius);
           if (!hit) continue;
-          const auto& tri = mesh.triangles[hit->triangle];
-          const double w = 1 - hit->u - hit->v;
           const glm::dvec3 fn = glm::normalize(mesh.areaVector(hit->triangle));
-          glm::dvec3 n = w * glm::dvec3(vertexNormals[tri.x]) + hit->u * glm::dvec3(vertexNormals[tri.y]) +
-                         hit->v * glm::dvec3(vertexNormals[tri.z]);
-          n = glm::length(n) > 0 ? glm::normalize(n) : fn;
+          const glm::dvec3 n =
+              scene::shadingNormal(mesh, vertexNormals, hit->triangle, glm::dvec3(1 - hit->u - hit->v, hit->u, hit->v));
           const glm::dvec3 x3 = origin + hit->t * mAxis;
           const glm::dvec3 e = scene::irradianceAt(x3, n, fn, one, caster, irr, y * resolution + x);
           const double obliquity = std::min(kMaxObliquity, 1.0 / std::max(std::abs(glm::dot(fn, mAxis)), 1e-12));

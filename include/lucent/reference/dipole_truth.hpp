@@ -162,12 +162,8 @@ inline std::vector<std::optional<ShadingPoint>> primaryHits(const scene::Pinhole
       const scene::Ray ray = camera.primaryRay(double(i % camera.width), double(i / camera.width));
       const auto hit = caster.intersect(ray.origin, ray.direction, 0, std::numeric_limits<double>::infinity());
       if (!hit) continue;
-      const auto& tri = mesh.triangles[hit->triangle];
-      const double w = 1 - hit->u - hit->v;
-      glm::dvec3 n = w * glm::dvec3(vertexNormals[tri.x]) + hit->u * glm::dvec3(vertexNormals[tri.y]) +
-                     hit->v * glm::dvec3(vertexNormals[tri.z]);
-      const double len = glm::length(n);
-      n = len > 0 ? n / len : glm::normalize(mesh.areaVector(hit->triangle));
+      const glm::dvec3 n =
+          scene::shadingNormal(mesh, vertexNormals, hit->triangle, glm::dvec3(1 - hit->u - hit->v, hit->u, hit->v));
       const double cosOut = std::clamp(-glm::dot(n, ray.direction), 0.0, 1.0);
       hits[i] = ShadingPoint{ray.origin + hit->t * ray.direction, cosOut, hit->triangle, hit->u, hit->v};
     }

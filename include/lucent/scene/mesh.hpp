@@ -81,4 +81,15 @@ struct TriangleMesh {
   }
 };
 
+/// The smooth shading normal at barycentrics (w0, w1, w2) of triangle t: the interpolated vertex normal,
+/// or the face normal where the interpolation vanishes (opposite normals at a crease).
+inline glm::dvec3 shadingNormal(const TriangleMesh& mesh, const std::vector<glm::vec3>& vertexNormals, std::size_t t,
+                                const glm::dvec3& w) {
+  const auto& tri = mesh.triangles[t];
+  const glm::dvec3 n = w.x * glm::dvec3(vertexNormals[tri.x]) + w.y * glm::dvec3(vertexNormals[tri.y]) +
+                       w.z * glm::dvec3(vertexNormals[tri.z]);
+  const double len = glm::length(n);
+  return len > 0 ? n / len : glm::normalize(mesh.areaVector(t));
+}
+
 }  // namespace lucent::scene
