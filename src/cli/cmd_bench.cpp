@@ -52,6 +52,25 @@ double baselineTimeAtError(std::vector<std::pair<double, double>> errorTime, dou
   return std::nan("");
 }
 
+/// The product of the sweeps, each setting combined with the fixed knobs and validated.
+std::vector<render::Knobs> sweepSettings(const render::Method& method, const std::map<std::string, std::string>& fixed,
+                                         const std::vector<std::pair<std::string, std::vector<std::string>>>& sweeps) {
+  std::vector<std::map<std::string, std::string>> combos{fixed};
+  for (const auto& [name, values] : sweeps) {
+    std::vector<std::map<std::string, std::string>> next;
+    for (const auto& c : combos)
+      for (const auto& v : values) {
+        auto k = c;
+        k[name] = v;
+        next.push_back(k);
+      }
+    combos.swap(next);
+  }
+  std::vector<render::Knobs> settings;
+  for (const auto& c : combos) settings.emplace_back(method.knobs, c, method.name);
+  return settings;
+}
+
 std::map<std::string, std::string> knobArgs(const Args& args, const std::string& option) {
   std::map<std::string, std::string> out;
   for (const auto& k : args.all(option))
@@ -94,20 +113,13 @@ int runBench(int argc, char** argv) {
   if (refGiven.empty() && refMethod.name == "reference") refGiven["fraction"] = "0.125";
   const render::Knobs refKnobs(refMethod.knobs, refGiven, refMethod.name);
 
-  // The product of the sweeps, each combined with the fixed knobs; validated before anything runs.
-  std::vector<render::Knobs> settings;
-  std::vector<std::map<std::string, std::string>> combos{knobArgs(args, "knob")};
-  for (const auto& [name, values] : sweeps) {
-    std::vector<std::map<std::string, std::string>> next;
-    for (const auto& c : combos)
-      for (const auto& v : values) {
-        auto k = c;
-        k[name] = v;
-        next.push_back(k);
-      }
-    combos.swap(next);
-  }
-  for (const auto& c : combos) settings.emplace_back(method.knobs, c, method.name);
+  // Every setting (swept and baseline) is validated before anything runs.
+  const std::vector<render::Knobs> settings = sweepSettings(method, knobArgs(args, "knob"), sweeps);
+  const render::Method* baselineMethod = args.has("baseline-method") ? &render::findMethod(args.get("baseline-method")) : nullptr;
+  std::vector<std::pair<std::string, std::vector<std::string>>> baselineSweeps;
+  for (const auto& text : args.all("baseline-sweep")) baselineSweeps.push_back(parseSweep(args, text));
+  const std::vector<render::Knobs> baselineSettings =
+      baselineMethod ? sweepSettings(*baselineMethod, {}, baselineSweeps) : std::vector<render::Knobs>{};
 
   const Scene scene = buildScene(args);
   const bool progress = !args.has("quiet");
@@ -128,28 +140,12 @@ int runBench(int argc, char** argv) {
   // Baseline curve (error -> time), measured in the same run, for speed-ups at equal error.
   std::vector<Row> baseline;
   std::vector<std::pair<double, double>> baselineCurve;
-  if (args.has("baseline-method")) {
-    const render::Method& bm = render::findMethod(args.get("baseline-method"));
-    std::vector<std::map<std::string, std::string>> bcombos{{}};
-    for (const auto& text : args.all("baseline-sweep")) {
-      const auto [name, values] = parseSweep(args, text);
-      std::vector<std::map<std::string, std::string>> next;
-      for (const auto& c : bcombos)
-        for (const auto& v : values) {
-          auto k = c;
-          k[name] = v;
-          next.push_back(k);
-        }
-      bcombos.swap(next);
-    }
-    for (const auto& c : bcombos) {
-      const render::Knobs k(bm.knobs, c, bm.name);
-      std::fprintf(stderr, "lucent bench: baseline %s (%s)\n", bm.name.c_str(), k.summary(true).c_str());
-      const render::RenderResult r = bm.run(scene, k, progress);
-      baseline.push_back({bm.name, k.summary(), k.summary(true), r.seconds, peakMemoryMiB(), r.figures,
-                          image::compareImages(r.image, ref.image)});
-      baselineCurve.push_back({baseline.back().errors.relativeRms, r.seconds});
-    }
+  for (const render::Knobs& k : baselineSettings) {
+    std::fprintf(stderr, "lucent bench: baseline %s (%s)\n", baselineMethod->name.c_str(), k.summary(true).c_str());
+    const render::RenderResult r = baselineMethod->run(scene, k, progress);
+    baseline.push_back({baselineMethod->name, k.summary(), k.summary(true), r.seconds, peakMemoryMiB(), r.figures,
+                        image::compareImages(r.image, ref.image)});
+    baselineCurve.push_back({baseline.back().errors.relativeRms, r.seconds});
   }
 
   std::ostringstream csv;
