@@ -9,10 +9,18 @@ Method jensenBuhlerMethod();
 Method tsisMethod();
 Method hybridMethod();
 Method tsmMethod();
+#ifdef LUCENT_HAVE_TETGEN
+Method quadgraphMethod();
+#endif
 
 const std::vector<Method>& methods() {
   static const std::vector<Method> all{referenceMethod(), jensenBuhlerMethod(), tsisMethod(), hybridMethod(),
-                                         tsmMethod()};
+                                         tsmMethod()
+#ifdef LUCENT_HAVE_TETGEN
+                                             ,
+                                         quadgraphMethod()
+#endif
+  };
   return all;
 }
 

@@ -3,7 +3,12 @@
 
 #include <tetgen.h>
 
+#include <cmath>
 #include <cstdio>
+#include <algorithm>
+#include <functional>
+#include <limits>
+#include <queue>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -66,9 +71,122 @@ std::string explain(int code) {
     default: return "TetGen failed with internal error " + std::to_string(code) + "; try without surface preservation";
   }
 }
+void run(const std::string& switches, tetgenio& in, tetgenio& out, tetgenio* background = nullptr) {
+  std::vector<char> buffer(switches.begin(), switches.end());
+  buffer.push_back('\0');
+  try {
+    ::tetrahedralize(buffer.data(), &in, &out, nullptr, background);
+  } catch (int code) {
+    throw InputError("tetrahedralize: " + explain(code));
+  }
+}
+
+scene::TetMesh convert(const tetgenio& out) {
+  scene::TetMesh tets;
+  tets.positions.resize(std::size_t(out.numberofpoints));
+  for (int i = 0; i < out.numberofpoints; ++i)
+    tets.positions[std::size_t(i)] = {out.pointlist[3 * i], out.pointlist[3 * i + 1], out.pointlist[3 * i + 2]};
+  tets.tets.reserve(std::size_t(out.numberoftetrahedra));
+  for (int t = 0; t < out.numberoftetrahedra; ++t) {
+    const int* c = out.tetrahedronlist + std::size_t(t) * std::size_t(out.numberofcorners);
+    tets.tets.push_back({unsigned(c[0]), unsigned(c[1]), unsigned(c[2]), unsigned(c[3])});
+    if (tets.volume(tets.tets.size() - 1) < 0) std::swap(tets.tets.back().z, tets.tets.back().w);
+  }
+  for (int f = 0; f < out.numberoftrifaces; ++f) {
+    const int marker = out.trifacemarkerlist ? out.trifacemarkerlist[f] : 0;
+    if (marker <= 0) continue;  // an inner face TetGen listed (none without -f), or no source
+    const int* v = out.trifacelist + 3 * f;
+    tets.boundaryFaces.push_back({unsigned(v[0]), unsigned(v[1]), unsigned(v[2])});
+    tets.boundarySource.push_back(std::uint32_t(marker - 1));
+  }
+  return tets;
+}
+
+/// The mean length of the boundary edges at each boundary vertex (0 elsewhere): the local surface size.
+std::vector<double> localSurfaceSize(const scene::TetMesh& m) {
+  std::vector<double> sum(m.positions.size(), 0.0), count(m.positions.size(), 0.0);
+  for (const auto& f : m.boundaryFaces)
+    for (int k = 0; k < 3; ++k) {
+      const double len = glm::distance(m.positions[f[k]], m.positions[f[(k + 1) % 3]]);
+      sum[f[k]] += len, count[f[k]] += 1;
+      sum[f[(k + 1) % 3]] += len, count[f[(k + 1) % 3]] += 1;
+    }
+  for (std::size_t v = 0; v < sum.size(); ++v) sum[v] = count[v] > 0 ? sum[v] / count[v] : 0.0;
+  return sum;
+}
+
+/// The target edge length h(x) = h_s + K d(x) at every vertex: d is the distance to the boundary along
+/// tet edges (multi-source Dijkstra; an upper bound of the straight distance within a few tens of percent
+/// on quality meshes, which is all a size field needs) and h_s the local surface size where that path starts.
+std::vector<double> targetEdgeLength(const scene::TetMesh& m, double gradingK) {
+  std::vector<std::vector<std::uint32_t>> adjacent(m.positions.size());
+  for (const auto& t : m.tets)
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b)
+        if (a != b) adjacent[t[a]].push_back(t[b]);
+  const std::vector<double> surfaceSize = localSurfaceSize(m);
+  std::vector<double> dist(m.positions.size(), std::numeric_limits<double>::infinity());
+  std::vector<double> size(m.positions.size(), 0.0);
+  using Item = std::pair<double, std::uint32_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  for (const auto& f : m.boundaryFaces)
+    for (int k = 0; k < 3; ++k)
+      if (dist[f[k]] != 0) dist[f[k]] = 0, size[f[k]] = surfaceSize[f[k]], queue.push({0.0, f[k]});
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > dist[v]) continue;
+    for (std::uint32_t w : adjacent[v]) {
+      const double nd = d + glm::distance(m.positions[v], m.positions[w]);
+      if (nd < dist[w]) dist[w] = nd, size[w] = size[v], queue.push({nd, w});
+    }
+  }
+  for (std::size_t v = 0; v < size.size(); ++v) size[v] += gradingK * dist[v];
+  return size;
+}
+
+/// TetGen's refine mode (-r) with a volume target per tet from targetEdgeLength (a regular tet of edge h
+/// has volume h^3 / (6 sqrt 2)). The Steiner budget is twice the point count the targets ask for, so a
+/// surface TetGen cannot satisfy (e.g. tiny contour triangles under -Y) stops early instead of hanging.
+scene::TetMesh refineToSize(const scene::TetMesh& mesh, const TetOptions& options, std::size_t* budget) {
+  const std::vector<double> target = targetEdgeLength(mesh, options.gradingK);
+  tetgenio in, out;
+  in.firstnumber = 0;
+  in.numberofpoints = int(mesh.positions.size());
+  in.pointlist = new REAL[mesh.positions.size() * 3];
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+    for (int k = 0; k < 3; ++k) in.pointlist[3 * i + k] = mesh.positions[i][k];
+  in.numberoftetrahedra = int(mesh.tets.size());
+  in.numberofcorners = 4;
+  in.tetrahedronlist = new int[mesh.tets.size() * 4];
+  in.tetrahedronvolumelist = new REAL[mesh.tets.size()];
+  double wantedTets = 0;
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    double h = 0;
+    for (int k = 0; k < 4; ++k) in.tetrahedronlist[4 * t + std::size_t(k)] = int(mesh.tets[t][k]), h += target[mesh.tets[t][k]] / 4;
+    in.tetrahedronvolumelist[t] = h * h * h / (6 * std::sqrt(2.0));
+    wantedTets += std::max(1.0, mesh.volume(t) / in.tetrahedronvolumelist[t]);
+  }
+  in.numberoftrifaces = int(mesh.boundaryFaces.size());
+  in.trifacelist = new int[mesh.boundaryFaces.size() * 3];
+  in.trifacemarkerlist = new int[mesh.boundaryFaces.size()];
+  for (std::size_t f = 0; f < mesh.boundaryFaces.size(); ++f) {
+    for (int k = 0; k < 3; ++k) in.trifacelist[3 * f + std::size_t(k)] = int(mesh.boundaryFaces[f][k]);
+    in.trifacemarkerlist[f] = int(mesh.boundarySource[f] + 1);
+  }
+  // A tet mesh has about 6 tets per point.
+  const std::size_t steiner = std::min<std::size_t>(std::size_t(options.maxSteinerPoints),
+                                                    std::size_t(2 * wantedTets / 6) + 1000);
+  if (budget) *budget = steiner;
+  std::string s = "rzQq" + std::to_string(options.radiusEdgeRatio) + "a";
+  if (options.preserveSurface) s += "Y";
+  s += "S" + std::to_string(steiner);
+  run(s, in, out);
+  return convert(out);
+}
 }  // namespace
 
-scene::TetMesh tetrahedralize(const scene::TriangleMesh& surface, const TetOptions& options) {
+scene::TetMesh tetrahedralize(const scene::TriangleMesh& surface, const TetOptions& options, TetReport* report) {
   if (surface.triangles.empty()) throw InputError("tetrahedralize: the surface has no triangles");
   tetgenio in, out;
   in.firstnumber = 0;
@@ -87,6 +205,9 @@ scene::TetMesh tetrahedralize(const scene::TriangleMesh& surface, const TetOptio
     f.polygonlist[0].numberofvertices = 3;
     f.polygonlist[0].vertexlist = new int[3]{int(surface.triangles[t].x), int(surface.triangles[t].y), int(surface.triangles[t].z)};
   }
+  // Marker t + 1 (0 means "none" to TetGen): every output boundary face names its input triangle.
+  in.facetmarkerlist = new int[surface.triangles.size()];
+  for (std::size_t t = 0; t < surface.triangles.size(); ++t) in.facetmarkerlist[t] = int(t + 1);
   const std::vector<glm::dvec3> holes = cavityPoints(surface);
   in.numberofholes = int(holes.size());
   if (!holes.empty()) {
@@ -110,27 +231,17 @@ scene::TetMesh tetrahedralize(const scene::TriangleMesh& surface, const TetOptio
                        " intersecting faces)");
   }
 
-  char switches[128];
   std::string s = "pzQq" + std::to_string(options.radiusEdgeRatio);
   if (options.maxVolume > 0) s += "a" + std::to_string(options.maxVolume);
   if (options.preserveSurface) s += "Y";
   s += "S" + std::to_string(options.maxSteinerPoints);
-  std::snprintf(switches, sizeof switches, "%s", s.c_str());
-  try {
-    ::tetrahedralize(switches, &in, &out);
-  } catch (int code) {
-    throw InputError("tetrahedralize: " + explain(code));
-  }
-
-  scene::TetMesh tets;
-  tets.positions.resize(std::size_t(out.numberofpoints));
-  for (int i = 0; i < out.numberofpoints; ++i)
-    tets.positions[std::size_t(i)] = {out.pointlist[3 * i], out.pointlist[3 * i + 1], out.pointlist[3 * i + 2]};
-  tets.tets.reserve(std::size_t(out.numberoftetrahedra));
-  for (int t = 0; t < out.numberoftetrahedra; ++t) {
-    const int* c = out.tetrahedronlist + std::size_t(t) * std::size_t(out.numberofcorners);
-    tets.tets.push_back({unsigned(c[0]), unsigned(c[1]), unsigned(c[2]), unsigned(c[3])});
-    if (tets.volume(tets.tets.size() - 1) < 0) std::swap(tets.tets.back().z, tets.tets.back().w);
+  run(s, in, out);
+  scene::TetMesh tets = convert(out);
+  if (options.gradingK >= 0) {
+    std::size_t budget = 0;
+    const std::size_t before = tets.positions.size();
+    tets = refineToSize(tets, options, &budget);
+    if (report) report->steinerBudget = budget, report->steinerUsed = tets.positions.size() - before;
   }
   return tets;
 }

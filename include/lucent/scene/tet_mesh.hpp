@@ -13,6 +13,10 @@ namespace lucent::scene {
 struct TetMesh {
   std::vector<glm::dvec3> positions;
   std::vector<glm::uvec4> tets;  ///< positively oriented: volume() > 0
+  /// The boundary faces (vertex triples) and, for each, the input surface triangle it lies on. A boundary
+  /// face equals its source triangle when the surface was preserved, and is a piece of it otherwise.
+  std::vector<glm::uvec3> boundaryFaces;
+  std::vector<std::uint32_t> boundarySource;
 
   double volume(std::size_t t) const {
     const glm::dvec3 a = positions[tets[t].x], b = positions[tets[t].y], c = positions[tets[t].z], d = positions[tets[t].w];
