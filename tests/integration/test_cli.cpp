@@ -233,3 +233,43 @@ TEST_CASE("profile --method pathtrace: ring CSV with standard errors, totals bes
   CHECK(rows.size() == 10);
   CHECK(contains(r.err, "total diffuse reflectance R: Monte Carlo"));
 }
+
+#ifdef LUCENT_HAVE_TETGEN
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+TEST_CASE("render --method quadgraph: image, per-level iterations, and the graph as .vtu for ParaView") {
+  lucent::test::TempDir dir;
+  const std::string vtu = dir / "graph.vtu", stats = dir / "qg.json";
+  const Run r = lucentCli("render --shape sphere --size-mm 10 --width 32 --height 32 --quiet --method quadgraph "
+                          "--knob levels=2 --knob solver=sor --knob vtu=" + vtu + " --out " + dir / "qg.exr" +
+                              " --stats " + stats,
+                          dir);
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const std::string json = slurp(stats);
+  CHECK(contains(json, "\"iterations_level1_r\""));
+  CHECK(contains(json, "\"solver\": \"sor\""));
+  auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+  reader->SetFileName(vtu.c_str());
+  reader->Update();
+  vtkUnstructuredGrid* grid = reader->GetOutput();
+  const auto nodesAt = json.find("\"nodes\": ");
+  REQUIRE(nodesAt != std::string::npos);
+  CHECK(double(grid->GetNumberOfPoints()) == std::stod(json.substr(nodesAt + 9)));
+  CHECK(grid->GetNumberOfCells() > grid->GetNumberOfPoints() / 2);  // ~2 edges per node
+  for (const char* name : {"flux_r", "flux_g", "flux_b", "kappa_r", "mu_r", "surface"})
+    CHECK(grid->GetPointData()->GetArray(name) != nullptr);
+  double range[2];
+  grid->GetPointData()->GetArray("flux_r")->GetRange(range);
+  CHECK(range[0] >= -1e-6 * range[1]);
+  CHECK(range[1] > 0);
+
+  const Run bad = lucentCli("render --shape sphere --quiet --method quadgraph --knob solver=gmres --out " + dir / "x.exr", dir);
+  CHECK(bad.code == 2);
+  CHECK(contains(bad.err, "knob solver must be jacobi or sor or cg"));
+  CHECK_FALSE(std::filesystem::exists(dir / "x.exr"));
+}
+#endif
