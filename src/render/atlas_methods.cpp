@@ -19,26 +19,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-template <class T>
-T choice(const Knobs& knobs, const std::string& method, const std::string& knob,
-         const std::vector<std::pair<std::string, T>>& options) {
-  const std::string& v = knobs.text(knob);
-  std::string names;
-  for (const auto& [name, value] : options) {
-    if (name == v) return value;
-    names += (names.empty() ? "" : " or ") + name;
-  }
-  throw InputError("method '" + method + "' knob " + knob + " must be " + names + ", not '" + v + "'");
-}
-
-int positiveInt(const Knobs& knobs, const std::string& method, const std::string& knob, int lo, int hi) {
-  const double v = knobs.number(knob);
-  if (!(v >= lo && v <= hi) || v != std::floor(v))
-    throw InputError("method '" + method + "' knob " + knob + " must be an integer in [" + std::to_string(lo) + ", " +
-                     std::to_string(hi) + "], not " + knobs.text(knob));
-  return int(v);
-}
-
 scene::IrradianceSettings irradianceSettings(const cli::Scene& scene, const Knobs& knobs) {
   scene::IrradianceSettings irr;
   irr.eta = scene.material.eta;
@@ -81,7 +61,7 @@ AtlasStages runAtlasStages(const cli::Scene& scene, const Knobs& knobs, const st
                            RenderResult& out) {
   AtlasStages s;
   atlas::AtlasOptions ao;
-  ao.resolution = positiveInt(knobs, method, "atlas", 16, 8192);
+  ao.resolution = knobs.integer("atlas", 16, 8192);
   ao.maxNormalAngleDeg = knobs.number("chart-angle");
   if (!(ao.maxNormalAngleDeg >= 1 && ao.maxNormalAngleDeg <= 80))
     throw InputError("method '" + method + "' knob chart-angle must be in [1, 80] degrees");
@@ -110,11 +90,11 @@ AtlasStages runAtlasStages(const cli::Scene& scene, const Knobs& knobs, const st
 
   t = Clock::now();
   atlas::SamplingOptions so;
-  so.samples = positiveInt(knobs, method, "samples", 1, 10000000);
-  so.sampler = choice<atlas::TexelSampler>(knobs, method, "sampler",
+  so.samples = knobs.integer("samples", 1, 10000000);
+  so.sampler = knobs.choice<atlas::TexelSampler>("sampler",
                                            {{"mip", atlas::TexelSampler::Mipmap}, {"row", atlas::TexelSampler::RowMajor}});
-  so.pattern = choice<atlas::SamplePattern>(
-      knobs, method, "pattern",
+  so.pattern = knobs.choice<atlas::SamplePattern>(
+      "pattern",
       {{"stratified", atlas::SamplePattern::Stratified}, {"independent", atlas::SamplePattern::Independent}});
   so.seed = std::uint64_t(knobs.number("seed"));
   s.samples = atlas::drawImportanceSamples(irradiance, so);
@@ -126,9 +106,9 @@ AtlasStages runAtlasStages(const cli::Scene& scene, const Knobs& knobs, const st
 
 /// Shades every covered pixel with `eval` (per pixel) or through per-vertex radiosity.
 template <class Eval>
-void shade(const cli::Scene& scene, const Knobs& knobs, const std::string& method, bool progress, const Eval& eval,
+void shade(const cli::Scene& scene, const Knobs& knobs, bool progress, const Eval& eval,
            RenderResult& out) {
-  const bool perVertex = choice<bool>(knobs, method, "eval", {{"pixel", false}, {"vertex", true}});
+  const bool perVertex = knobs.choice<bool>("eval", {{"pixel", false}, {"vertex", true}});
   const auto t = Clock::now();
   const auto hits = reference::primaryHits(scene.camera, scene.mesh, scene.vertexNormals, *scene.caster, util::tbbFor);
   std::size_t covered = 0;
@@ -156,7 +136,7 @@ void finish(RenderResult& out, Clock::time_point start) {
 /// One translucent shadow map per light, timed.
 std::vector<atlas::TranslucentShadowMap> buildShadowMaps(const cli::Scene& scene, const Knobs& knobs,
                                                          const std::string& method, RenderResult& out) {
-  const int res = positiveInt(knobs, method, "map", 8, 8192);
+  const int res = knobs.integer("map", 8, 8192);
   const auto t = Clock::now();
   std::vector<atlas::TranslucentShadowMap> maps;
   for (const auto& light : scene.lights) {
@@ -180,7 +160,7 @@ Method tsisMethod() {
             RenderResult out;
             const auto start = Clock::now();
             AtlasStages s = runAtlasStages(scene, knobs, "tsis", progress, out);
-            const bool exact = choice<bool>(knobs, "tsis", "rd", {{"table", false}, {"exact", true}});
+            const bool exact = knobs.choice<bool>("rd", {{"table", false}, {"exact", true}});
             const auto dipoleF = optics::Dipole<float>::make(optics::Rgb<float>(scene.material.sigmaA),
                                                              optics::Rgb<float>(scene.material.sigmaSPrime),
                                                              float(scene.material.eta));
@@ -192,7 +172,7 @@ Method tsisMethod() {
               out.figures["rd_table_nodes"] = double(table.size());
               eval.emplace(std::move(s.samples), table, float(scene.material.eta));
             }
-            shade(scene, knobs, "tsis", progress, *eval, out);
+            shade(scene, knobs, progress, *eval, out);
             finish(out, start);
             return out;
           }};
@@ -216,7 +196,7 @@ Method hybridMethod() {
             const double rp = atlas::hybridRp(dipole, c);
             const atlas::HybridProfiles profiles(dipole, rp, diag, k);
             out.figures["rp_mm"] = rp;
-            const int rings = positiveInt(knobs, "hybrid", "L", 1, 1000), perRing = positiveInt(knobs, "hybrid", "C", 1, 1000);
+            const int rings = knobs.integer("L", 1, 1000), perRing = knobs.integer("C", 1, 1000);
             auto ring = atlas::makeRingFilter([&](double r) { return glm::dvec3(profiles.local(float(r))); }, rings,
                                               perRing, diag);
             out.figures["local_filter_samples"] = ring.sampleCount();
@@ -225,7 +205,7 @@ Method hybridMethod() {
             const atlas::LocalTermEvaluator local(std::move(maps), std::move(ring), profiles.local, float(scene.material.eta));
             AtlasStages s = runAtlasStages(scene, knobs, "hybrid", progress, out);
             const atlas::TsisEvaluator global(std::move(s.samples), profiles.global, float(scene.material.eta));
-            shade(scene, knobs, "hybrid", progress, atlas::HybridEvaluator(local, global), out);
+            shade(scene, knobs, progress, atlas::HybridEvaluator(local, global), out);
             finish(out, start);
             return out;
           }};
@@ -242,13 +222,13 @@ Method tsmMethod() {
             const double diag = scene.mesh.bounds().diagonal();
             const optics::RadialTable<float> profile([&](float r) { return optics::Rgb<float>(dipole.rd(double(r))); },
                                                      float(diag));
-            const int rings = positiveInt(knobs, "tsm", "L", 1, 1000), perRing = positiveInt(knobs, "tsm", "C", 1, 1000);
+            const int rings = knobs.integer("L", 1, 1000), perRing = knobs.integer("C", 1, 1000);
             auto ring = atlas::makeRingFilter([&](double r) { return glm::dvec3(profile(float(r))); }, rings, perRing, diag);
             out.figures["local_filter_samples"] = ring.sampleCount();
             out.figures["local_filter_radius_mm"] = ring.outerRadius;
             auto maps = buildShadowMaps(scene, knobs, "tsm", out);
             const atlas::LocalTermEvaluator local(std::move(maps), std::move(ring), profile, float(scene.material.eta));
-            shade(scene, knobs, "tsm", progress, local, out);
+            shade(scene, knobs, progress, local, out);
             finish(out, start);
             return out;
           }};

@@ -1,5 +1,6 @@
 #include "knobs.hpp"
 
+#include <cmath>
 #include <sstream>
 
 #include "../cli/args.hpp"
@@ -23,6 +24,21 @@ Knobs::Knobs(const std::vector<KnobSpec>& specs, const std::map<std::string, std
 
 double Knobs::number(const std::string& name) const {
   return cli::parseNumber(text(name), "method '" + mMethod + "' knob " + name);
+}
+
+double Knobs::numberIn(const std::string& name, double lo, double hi, bool integer) const {
+  const double v = number(name);
+  if (!(v >= lo && v <= hi) || (integer && v != std::floor(v))) {
+    std::ostringstream range;
+    range << "[" << lo << ", " << hi << "]";
+    throw InputError("method '" + mMethod + "' knob " + name + " must be " + (integer ? "an integer " : "") + "in " +
+                     range.str() + ", not " + text(name));
+  }
+  return v;
+}
+
+void Knobs::throwNotOneOf(const std::string& name, const std::string& names) const {
+  throw InputError("method '" + mMethod + "' knob " + name + " must be " + names + ", not '" + text(name) + "'");
 }
 
 const std::string& Knobs::text(const std::string& name) const { return mValues.at(name); }

@@ -23,26 +23,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-const std::string kName = "quadgraph";
-
-std::string pick(const Knobs& knobs, const std::string& knob, const std::vector<std::string>& options) {
-  const std::string& v = knobs.text(knob);
-  std::string names;
-  for (const auto& o : options) {
-    if (o == v) return v;
-    names += (names.empty() ? "" : " or ") + o;
-  }
-  throw InputError("method 'quadgraph' knob " + knob + " must be " + names + ", not '" + v + "'");
-}
-
-double inRange(const Knobs& knobs, const std::string& knob, double lo, double hi, bool integer = false) {
-  const double v = knobs.number(knob);
-  if (!(v >= lo && v <= hi) || (integer && v != std::floor(v)))
-    throw InputError("method 'quadgraph' knob " + knob + " must be " + (integer ? "an integer " : "") + "in [" +
-                     std::to_string(lo) + ", " + std::to_string(hi) + "], not " + knobs.text(knob));
-  return v;
-}
-
 /// One resolution level: its surface, graph, and (for all but the finest) the map to the next level.
 struct Level {
   scene::TriangleMesh surface;
@@ -52,13 +32,14 @@ struct Level {
 
 /// The finest level is the scene's mesh; each coarser one has about a quarter of the triangles (Sec. 4.3).
 std::vector<Level> buildLevels(const cli::Scene& scene, const Knobs& knobs, RenderResult& out, bool progress) {
-  const int levels = int(inRange(knobs, "levels", 1, 6, true));
+  const int levels = knobs.integer("levels", 1, 6);
   tetgen::TetOptions tet;
-  tet.gradingK = inRange(knobs, "K", 0, 100);
-  tet.radiusEdgeRatio = inRange(knobs, "quality", 1.1, 10);
-  const int relaxIterations = int(inRange(knobs, "relax", 0, 50, true));
-  const std::string packing = pick(knobs, "packing", {"blocks", "random", "none"});
-  const std::size_t blockSide = std::size_t(inRange(knobs, "block", 1, 1024, true));
+  tet.gradingK = knobs.numberIn("K", 0, 100);
+  tet.radiusEdgeRatio = knobs.numberIn("quality", 1.1, 10);
+  const int relaxIterations = knobs.integer("relax", 0, 50);
+  const std::string packing = knobs.choice<std::string>(
+      "packing", {{"blocks", "blocks"}, {"random", "random"}, {"none", "none"}});
+  const std::size_t blockSide = std::size_t(knobs.integer("block", 1, 1024));
 
   std::vector<Level> out_levels;
   util::ProgressBar bar("tetrahedralize + QuadGraph", progress);
@@ -134,21 +115,20 @@ Method quadgraphMethod() {
       {"block", "32", "block side r (r x r nodes per block)"},
       {"env-strata", "16", "environment light: strata x strata directions per surface node"},
       {"vtu", "", "write the finest graph with flux per channel, kappa and mu to this .vtu file"}};
-  return {kName, "QuadGraph: the diffusion equation solved on a tetrahedralization's dual graph (quadgraph-diffusion)",
+  return {"quadgraph", "QuadGraph: the diffusion equation solved on a tetrahedralization's dual graph (quadgraph-diffusion)",
           knobs, [](const cli::Scene& scene, const Knobs& knobs, bool progress) {
             RenderResult out;
             const auto start = Clock::now();
-            const std::string solverName = pick(knobs, "solver", {"jacobi", "sor", "cg"});
-            const quadgraph::Solver solver = solverName == "jacobi" ? quadgraph::Solver::Jacobi
-                                             : solverName == "sor"  ? quadgraph::Solver::Sor
-                                                                    : quadgraph::Solver::ConjugateGradient;
-            const quadgraph::Stencil stencil =
-                pick(knobs, "stencil", {"fv", "paper"}) == "fv" ? quadgraph::Stencil::FiniteVolume : quadgraph::Stencil::Paper;
+            const auto solver = knobs.choice<quadgraph::Solver>(
+                "solver", {{"jacobi", quadgraph::Solver::Jacobi}, {"sor", quadgraph::Solver::Sor},
+                           {"cg", quadgraph::Solver::ConjugateGradient}});
+            const auto stencil = knobs.choice<quadgraph::Stencil>(
+                "stencil", {{"fv", quadgraph::Stencil::FiniteVolume}, {"paper", quadgraph::Stencil::Paper}});
             quadgraph::SolveOptions so;
-            so.tolerance = inRange(knobs, "tolerance", 1e-14, 1);
-            so.maxIterations = int(inRange(knobs, "iterations", 1, 1e7, true));
-            so.omega = inRange(knobs, "omega", 0.01, 1.99);
-            const int envStrata = int(inRange(knobs, "env-strata", 1, 256, true));
+            so.tolerance = knobs.numberIn("tolerance", 1e-14, 1);
+            so.maxIterations = knobs.integer("iterations", 1, 10000000);
+            so.omega = knobs.numberIn("omega", 0.01, 1.99);
+            const int envStrata = knobs.integer("env-strata", 1, 256);
 
             // --- precompute: levels, transfers, barycentrics on the input mesh ---
             auto t = Clock::now();
