@@ -19,6 +19,7 @@
 #include "../util/basis.hpp"
 #include "../util/parallel.hpp"
 #include "../util/rng.hpp"
+#include "volume_sampling.hpp"
 
 namespace lucent::reference {
 
@@ -49,15 +50,6 @@ struct BeamTally {
   double total = 0, totalSq = 0;
   std::uint64_t dropped = 0;
 };
-
-inline glm::dvec3 scatterHG(const glm::dvec3& d, double g, util::Rng& rng) {
-  const double cosT = optics::sampleCosThetaHG(rng.uniform(), g);
-  const double sinT = std::sqrt(std::max(0.0, 1 - cosT * cosT));
-  const double phi = 2 * optics::kPi * rng.uniform();
-  glm::dvec3 t, u;
-  util::orthonormalBasis(d, t, u);
-  return glm::normalize(sinT * std::cos(phi) * t + sinT * std::sin(phi) * u + cosT * d);
-}
 
 inline void tracePhoton(const PencilBeamSettings& s, util::Rng& rng, BeamTally& tally, double ringWidth) {
   const double sigmaT = s.sigmaA + s.sigmaS, albedo = s.sigmaS / sigmaT;
@@ -100,7 +92,7 @@ inline void tracePhoton(const PencilBeamSettings& s, util::Rng& rng, BeamTally& 
       if (rng.uniform() >= 0.1) return;
       w *= 10;
     }
-    d = scatterHG(d, s.g, rng);
+    d = reference::scatterHG(d, s.g, rng);
   }
 }
 }  // namespace detail

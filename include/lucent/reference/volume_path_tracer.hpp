@@ -1,0 +1,299 @@
+#pragma once
+/// @file volume_path_tracer.hpp
+/// @brief The physical truth: unbiased volumetric path tracing of the radiative transfer equation inside
+/// the closed surfaces of a MediumScene (homogeneous or density-field media, nested bodies, cavities,
+/// Fresnel or null interfaces, HG phase), RGB with hero-channel MIS.
+///
+/// How each kind of light is reached:
+/// - environment: camera paths that leave the scene look it up (every scattering order);
+/// - point and directional lights, every interface index-matched: next-event estimation from each
+///   scattering vertex, through null interfaces (every order);
+/// - point and directional lights behind a refracting interface: light subpaths (light_subpaths.hpp)
+///   joined to each camera segment at a point drawn by equiangular sampling (Kulla & Fajardo 2012), whose
+///   pdf cancels the 1/d^2 of the join (distance-sampled joins have infinite variance). Paths whose
+///   every scatter-to-scatter edge is specular, single scattering among them, cannot be sampled then.
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "../image/image.hpp"
+#include "../scene/camera.hpp"
+#include "../util/parallel.hpp"
+#include "light_subpaths.hpp"
+
+namespace lucent::reference {
+
+class VolumePathTracer {
+ public:
+  VolumePathTracer(const MediumScene& scene, const scene::RayCaster& caster, const std::vector<scene::Light>& lights,
+                   const PathTracerSettings& settings)
+      : mScene(scene), mCaster(caster), mSettings(settings), mLights(lights) {
+    const scene::Bounds b = scene.mesh.bounds();
+    mCentre = b.center();
+    mRadius = 0.5 * b.diagonal() * 1.01 + 1e-9;
+    const bool matched = scene.indexMatched();
+    for (const scene::Light& light : mLights) {  // the copy: emitters point into it
+      LightEmitter e;
+      if (const auto* p = std::get_if<scene::PointLight>(&light)) {
+        e.kind = LightEmitter::Kind::Point, e.position = p->position, e.power = p->intensity;
+      } else if (const auto* d = std::get_if<scene::DirectionalLight>(&light)) {
+        e.kind = LightEmitter::Kind::Directional, e.towards = glm::normalize(d->towardLight), e.power = d->irradiance;
+      } else {
+        const auto& env = std::get<scene::EnvironmentLight>(light);
+        if (settings.environment == EnvironmentStrategy::Escape) {
+          mEscape.push_back(&env);
+          continue;
+        }
+        e.kind = LightEmitter::Kind::Environment, e.environment = &env;
+        e.sampler.emplace(env);
+        if (!e.sampler->valid()) continue;
+        mJoined.push_back(std::move(e));
+        continue;
+      }
+      (matched ? mNextEvent : mJoined).push_back(std::move(e));
+    }
+    mGuideRadius = settings.guideRadius > 0 ? settings.guideRadius : autoGuideRadius();
+  }
+
+  /// True when delta lights are reached by light subpaths (some interface refracts).
+  bool joinsDeltaLights() const {
+    for (const auto& e : mJoined)
+      if (e.kind != LightEmitter::Kind::Environment) return true;
+    return false;
+  }
+  double guideRadius() const { return mGuideRadius; }
+
+  /// One estimate of the radiance arriving at `origin` from `direction` (origin outside every body).
+  glm::dvec3 sample(const glm::dvec3& origin, const glm::dvec3& direction, util::Rng& rng, PathTracerStats& st) const {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    const PathTracerSettings& s = mSettings;
+    ++st.cameraSamples;
+    const int hero = std::min(2, int(3 * rng.uniform()));
+    HeroChannelWeight w;
+    glm::dvec3 radiance(0), pos = origin, dir = direction;
+    // A distant camera's rays start near the scene: Embree's float hit distances scale with the origin's.
+    if (glm::length(pos - mCentre) > 2 * mRadius) pos += std::max(0.0, glm::dot(mCentre - pos, dir) - 2 * mRadius) * dir;
+    std::uint32_t medium = 0;
+    int scatters = 0;
+    bool straightEdge = false, specularSinceScatter = false, firstSurface = true;
+    std::vector<LightVertex> targets;
+    for (std::uint64_t events = 0;; ++events) {
+      if (events >= s.maxEvents) {
+        ++st.truncatedPaths;
+        break;
+      }
+      const auto hit = mCaster.intersect(pos, dir, 0, kInf);
+      const Medium& m = mScene.media[medium];
+      if (!m.vacuum()) {
+        if (!hit) {
+          ++st.leakedPaths;
+          break;
+        }
+        if (!targets.empty()) radiance += joinAlongSegment(pos, dir, hit->t, medium, w, scatters + 1, targets, rng, st);
+        double t = 0;
+        if (sampleFlight(m, pos, dir, hit->t, hero, rng, w, t, st.medium)) {
+          pos += t * dir;
+          ++scatters, ++st.scatterEvents;
+          if (scatters > 1 && !specularSinceScatter) straightEdge = true;
+          specularSinceScatter = false;
+          if (!mNextEvent.empty() && orderCounts(s.orders, scatters)) radiance += nextEventEstimate(pos, dir, medium, w, rng, st);
+          if (!survivesRoulette(w, scatters, rng)) break;
+          dir = scatterHG(dir, m.g, rng);
+          continue;
+        }
+      } else if (!hit) {
+        if (orderCounts(s.orders, scatters) && (!s.connectableOnly || straightEdge))
+          for (const auto* env : mEscape) radiance += w.value() * env->lookup(dir);
+        break;
+      }
+      const glm::dvec3 point = surfacePoint(mScene, *hit);
+      const InterfaceSides sides = interfaceSides(mScene, hit->triangle, dir);
+      if (sides.from != medium) ++st.mediumMismatches;
+      const InterfaceCrossing c =
+          crossInterface(mScene, point, dir, sides, s.rayEpsilon, rng, true, firstSurface && s.subsurfaceOnly);
+      if (firstSurface) traceLightSubpaths(point, hero, rng, targets, st);
+      firstSurface = false;
+      if (c.weight <= 0) break;
+      w.scale(glm::dvec3(c.weight));
+      specularSinceScatter |= c.specular;
+      pos = c.origin, dir = c.direction, medium = c.medium;
+    }
+    if (!std::isfinite(radiance.x + radiance.y + radiance.z)) {
+      ++st.nonFiniteSamples;
+      return glm::dvec3(0);
+    }
+    return radiance;
+  }
+
+ private:
+  double autoGuideRadius() const {
+    // 1 / sigma_tr of the first medium, averaged over channels, at least one transport mean free path.
+    for (std::size_t i = 1; i < mScene.media.size(); ++i) {
+      const Medium& m = mScene.media[i];
+      if (m.vacuum()) continue;
+      const glm::dvec3 sigmaTPrime = m.sigmaA + (1 - m.g) * m.sigmaS;
+      const glm::dvec3 sigmaTr = glm::sqrt(3.0 * m.sigmaA * sigmaTPrime);
+      const double meanTr = (sigmaTr.x + sigmaTr.y + sigmaTr.z) / 3, meanT = (sigmaTPrime.x + sigmaTPrime.y + sigmaTPrime.z) / 3;
+      const double length = std::max(meanTr > 0 ? 1 / meanTr : mRadius, meanT > 0 ? 1 / meanT : 0.0);
+      return std::min(length, mRadius);
+    }
+    return mRadius;
+  }
+
+  void traceLightSubpaths(const glm::dvec3& entry, int hero, util::Rng& rng, std::vector<LightVertex>& targets,
+                          PathTracerStats& st) const {
+    const std::size_t first = targets.size();
+    for (const LightEmitter& e : mJoined)
+      for (int i = 0; i < mSettings.lightSubpaths; ++i)
+        traceLightSubpath(mScene, mCaster, sampleEmission(e, mCentre, mRadius, entry, mGuideRadius, rng), hero, mSettings,
+                          rng, targets, st);
+    for (std::size_t i = first; i < targets.size(); ++i) targets[i].weight.scale(glm::dvec3(1.0 / mSettings.lightSubpaths));
+  }
+
+  bool survivesRoulette(HeroChannelWeight& w, int scatters, util::Rng& rng) const {
+    if (scatters <= 3) return true;
+    const double throughput = maxComponent(w.value());
+    if (throughput >= 1) return true;
+    const double q = std::max(0.05, throughput);
+    if (rng.uniform() >= q) return false;
+    w.scale(glm::dvec3(1 / q));
+    return true;
+  }
+
+  /// Transmittance from x along `dir` over `length` through null interfaces only (0 at a specular one),
+  /// ending in `endMedium` when given.
+  glm::dvec3 segmentTransmittance(glm::dvec3 x, std::uint32_t medium, const glm::dvec3& dir, double length,
+                                  std::optional<std::uint32_t> endMedium, util::Rng& rng, PathTracerStats& st) const {
+    glm::dvec3 tr(1);
+    for (int crossings = 0; crossings < 64; ++crossings) {
+      const auto hit = mCaster.intersect(x, dir, 0, length);
+      const double seg = hit ? hit->t : length;
+      if (!mScene.media[medium].vacuum()) tr *= transmittance(mScene.media[medium], x, dir, seg, rng, st.medium);
+      if (!hit) return !endMedium || *endMedium == medium ? tr : glm::dvec3(0);
+      if (maxComponent(tr) <= 0) return tr;
+      const InterfaceSides sides = interfaceSides(mScene, hit->triangle, dir);
+      if (mScene.media[sides.from].eta != mScene.media[sides.to].eta) return glm::dvec3(0);
+      x += hit->t * dir - mSettings.rayEpsilon * sides.normalTowardsPath;
+      length -= hit->t;
+      medium = sides.to;
+    }
+    return glm::dvec3(0);
+  }
+
+  glm::dvec3 nextEventEstimate(const glm::dvec3& x, const glm::dvec3& dirIn, std::uint32_t medium,
+                               const HeroChannelWeight& w, util::Rng& rng, PathTracerStats& st) const {
+    glm::dvec3 sum(0);
+    const double g = mScene.media[medium].g;
+    for (const LightEmitter& e : mNextEvent) {
+      glm::dvec3 toLight = e.towards, irradiance = e.power;
+      double distance = std::numeric_limits<double>::infinity();
+      if (e.kind == LightEmitter::Kind::Point) {
+        const glm::dvec3 v = e.position - x;
+        distance = glm::length(v);
+        toLight = v / distance;
+        irradiance = e.power / (distance * distance);
+      }
+      const glm::dvec3 tr = segmentTransmittance(x, medium, toLight, distance, std::nullopt, rng, st);
+      // Light travels along -toLight, then towards the camera along -dirIn.
+      sum += w.value() * irradiance * tr * optics::phaseHG(glm::dot(toLight, dirIn), g);
+    }
+    return sum;
+  }
+
+  /// Joins every light vertex to the camera segment (pos, dir, [0, tMax]) at a point sampled with pdf
+  /// proportional to 1/d^2 from the light vertex (equiangular sampling).
+  glm::dvec3 joinAlongSegment(const glm::dvec3& pos, const glm::dvec3& dir, double tMax, std::uint32_t medium,
+                              const HeroChannelWeight& w, int cameraOrder, const std::vector<LightVertex>& targets,
+                              util::Rng& rng, PathTracerStats& st) const {
+    const Medium& m = mScene.media[medium];
+    glm::dvec3 sum(0);
+    for (const LightVertex& z : targets) {
+      if (!orderCounts(mSettings.orders, cameraOrder + z.order)) continue;
+      const double along = glm::dot(z.position - pos, dir);
+      const double h = std::max(glm::length(z.position - (pos + along * dir)), 1e-9 * mRadius);
+      const double a = std::atan2(-along, h), b = std::atan2(tMax - along, h);
+      if (!(b > a)) continue;
+      const double t = std::clamp(along + h * std::tan(a + (b - a) * rng.uniform()), 0.0, tMax);
+      const double pdf = h / ((b - a) * (h * h + (t - along) * (t - along)));
+      const glm::dvec3 x = pos + t * dir, toZ = z.position - x;
+      const double d2 = glm::dot(toZ, toZ);
+      if (!(d2 > 0) || !(pdf > 0)) continue;
+      const double d = std::sqrt(d2);
+      const glm::dvec3 u = toZ / d;
+      ++st.connections;
+      const glm::dvec3 trLink = segmentTransmittance(x, medium, u, d, z.medium, rng, st);
+      if (maxComponent(trLink) <= 0) continue;
+      const glm::dvec3 trCamera = transmittance(m, pos, dir, t, rng, st.medium);
+      const double rho = m.homogeneous() ? 1.0 : detail::densityAt(m, x, st.medium);
+      const double phases = optics::phaseHG(glm::dot(u, dir), m.g) *
+                            optics::phaseHG(glm::dot(z.directionIn, -u), mScene.media[z.medium].g);
+      const glm::dvec3 link = trCamera * (rho * m.sigmaS) * trLink * (phases / (d2 * pdf));
+      sum += HeroChannelWeight::joined(w, z.weight, link);
+    }
+    return sum;
+  }
+
+  const MediumScene& mScene;
+  const scene::RayCaster& mCaster;
+  PathTracerSettings mSettings;
+  const std::vector<scene::Light> mLights;
+  glm::dvec3 mCentre{0};
+  double mRadius = 1, mGuideRadius = 1;
+  std::vector<const scene::EnvironmentLight*> mEscape;
+  std::vector<LightEmitter> mNextEvent, mJoined;
+};
+
+struct PathTracedImage {
+  image::Image image;          ///< mean radiance; alpha 1 where the pixel's centre ray meets the scene
+  image::Image standardError;  ///< per-pixel standard error of the mean, per channel
+  PathTracerStats stats;
+};
+
+/// Renders with `samplesPerPixel` estimates per pixel along its centre ray (the pixel footprint of the
+/// dipole references, so images compare pixel by pixel). Deterministic for a fixed seed: each pixel has
+/// its own generator, whatever the thread count.
+inline PathTracedImage renderPathTraced(const VolumePathTracer& tracer, const scene::RayCaster& caster,
+                                        const scene::PinholeCamera& camera, const PathTracerSettings& s,
+                                        const util::ParallelFor& parallelFor = util::serialFor,
+                                        const util::Progress& progress = {}) {
+  PathTracedImage out;
+  out.image = image::Image(camera.width, camera.height);
+  out.standardError = image::Image(camera.width, camera.height);
+  std::mutex statsMutex;
+  std::atomic<int> rowsDone{0};
+  const int spp = std::max(1, s.samplesPerPixel);
+  parallelFor(std::size_t(camera.height), [&](std::size_t begin, std::size_t end) {
+    PathTracerStats local;
+    for (std::size_t row = begin; row < end; ++row) {
+      for (int col = 0; col < camera.width; ++col) {
+        const scene::Ray ray = camera.primaryRay(col, double(row));
+        if (!caster.intersect(ray.origin, ray.direction, 0, std::numeric_limits<double>::infinity())) continue;
+        const std::size_t pixel = row * std::size_t(camera.width) + std::size_t(col);
+        util::Rng rng(s.seed * 1000003ULL + pixel);
+        glm::dvec3 sum(0), sumSq(0);
+        for (int i = 0; i < spp; ++i) {
+          const glm::dvec3 l = tracer.sample(ray.origin, ray.direction, rng, local);
+          sum += l, sumSq += l * l;
+        }
+        const glm::dvec3 mean = sum / double(spp);
+        const glm::dvec3 variance = glm::max(glm::dvec3(0), sumSq / double(spp) - mean * mean) * (spp > 1 ? double(spp) / (spp - 1) : 0.0);
+        out.image.pixels[pixel] = glm::vec4(glm::vec3(mean), 1.0f);
+        out.standardError.pixels[pixel] = glm::vec4(glm::vec3(glm::sqrt(variance / double(spp))), 1.0f);
+      }
+      if (progress) progress(double(++rowsDone) / camera.height);
+    }
+    const std::lock_guard<std::mutex> lock(statsMutex);
+    out.stats.add(local);
+  });
+  return out;
+}
+
+}  // namespace lucent::reference

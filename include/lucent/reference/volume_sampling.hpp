@@ -1,0 +1,105 @@
+#pragma once
+/// @file volume_sampling.hpp
+/// @brief The medium primitives of the path tracers: Henyey-Greenstein direction sampling, free-flight
+/// sampling (closed form in a homogeneous medium, delta tracking in a heterogeneous one) and
+/// transmittance (closed form, or ratio tracking). Heterogeneous media use one scalar majorant
+/// sigma_bar = maxDensity * max_c sigma_t,c for all channels, so the majorant transmittances cancel in
+/// the hero-channel weights and only the real/null collision factors remain (Novak et al. 2014).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "../optics/constants.hpp"
+#include "../optics/phase_hg.hpp"
+#include "../util/basis.hpp"
+#include "../util/rng.hpp"
+#include "hero_channel_weight.hpp"
+#include "participating_media.hpp"
+
+namespace lucent::reference {
+
+/// A new propagation direction after scattering from direction `d`; the HG pdf cancels the phase value,
+/// so the path weight is unchanged.
+inline glm::dvec3 scatterHG(const glm::dvec3& d, double g, util::Rng& rng) {
+  const double cosT = optics::sampleCosThetaHG(rng.uniform(), g);
+  const double sinT = std::sqrt(std::max(0.0, 1 - cosT * cosT));
+  const double phi = 2 * optics::kPi * rng.uniform();
+  glm::dvec3 t, u;
+  util::orthonormalBasis(d, t, u);
+  return glm::normalize(sinT * std::cos(phi) * t + sinT * std::sin(phi) * u + cosT * d);
+}
+
+inline double maxComponent(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
+
+/// Counts of what a tracer had to correct; tests assert they stay zero where they must.
+struct MediumSamplingStats {
+  std::uint64_t majorantViolations = 0;  ///< density above maxDensity (clamped: biased there)
+};
+
+namespace detail {
+inline double densityAt(const Medium& m, const glm::dvec3& x, MediumSamplingStats& stats) {
+  const double d = m.density(x);
+  if (!(d <= m.maxDensity)) {  // also catches NaN
+    ++stats.majorantViolations;
+    return std::isnan(d) ? 0.0 : m.maxDensity;
+  }
+  return std::max(0.0, d);
+}
+}  // namespace detail
+
+/// Samples where the next collision along (x, d) happens before `tBoundary`. Returns true and sets `t`
+/// for a real (scattering) collision, false when the flight reaches the boundary; `w` takes the factors
+/// of that event for every channel (its pdf for each would-be hero, its contribution per channel).
+inline bool sampleFlight(const Medium& m, const glm::dvec3& x, const glm::dvec3& d, double tBoundary, int hero,
+                         util::Rng& rng, HeroChannelWeight& w, double& t, MediumSamplingStats& stats) {
+  const glm::dvec3 sigmaT = m.sigmaT();
+  if (m.homogeneous()) {
+    const double sh = sigmaT[hero];
+    t = sh > 0 ? -std::log(1 - rng.uniform()) / sh : tBoundary;
+    if (t >= tBoundary) {
+      const glm::dvec3 tr = glm::exp(-sigmaT * tBoundary);
+      w.scale(tr, tr);
+      return false;
+    }
+    const glm::dvec3 tr = glm::exp(-sigmaT * t);
+    w.scale(m.sigmaS * tr, sigmaT * tr);
+    return true;
+  }
+  const double sigmaBar = m.maxDensity * maxComponent(sigmaT);
+  if (!(sigmaBar > 0)) return false;
+  t = 0;
+  for (;;) {
+    t -= std::log(1 - rng.uniform()) / sigmaBar;
+    if (t >= tBoundary) return false;  // the majorant transmittance is common to every channel
+    const double rho = detail::densityAt(m, x + t * d, stats);
+    const glm::dvec3 sigmaTx = rho * sigmaT;
+    if (rng.uniform() * sigmaBar < sigmaTx[hero]) {
+      w.scale(rho * m.sigmaS, sigmaTx);
+      return true;
+    }
+    const glm::dvec3 nullPart = glm::dvec3(sigmaBar) - sigmaTx;
+    w.scale(nullPart, nullPart);
+  }
+}
+
+/// Transmittance along a segment of length `length` inside one medium: exact when homogeneous, an
+/// unbiased ratio-tracking estimate otherwise.
+inline glm::dvec3 transmittance(const Medium& m, const glm::dvec3& x, const glm::dvec3& d, double length,
+                                util::Rng& rng, MediumSamplingStats& stats) {
+  const glm::dvec3 sigmaT = m.sigmaT();
+  if (m.homogeneous()) return glm::exp(-sigmaT * length);
+  const double sigmaBar = m.maxDensity * maxComponent(sigmaT);
+  glm::dvec3 tr(1);
+  if (!(sigmaBar > 0)) return tr;
+  for (double t = 0;;) {
+    t -= std::log(1 - rng.uniform()) / sigmaBar;
+    if (t >= length) return tr;
+    tr *= glm::dvec3(1) - detail::densityAt(m, x + t * d, stats) * sigmaT / sigmaBar;
+    if (maxComponent(tr) < 1e-12) return glm::dvec3(0);  // negligible; stop walking
+  }
+}
+
+}  // namespace lucent::reference
