@@ -42,13 +42,20 @@ int runCompare(int argc, char** argv) {
     j.add("test", testPath).add("reference", refPath).add("rmse_tonemapped", e.rmseToneMapped);
     if (linear) j.add("relative_rms", e.relativeRms);
     j.add("max_abs_error", e.maxAbsError).add("covered_pixels", double(e.coveredPixels));
-    if (linear) j.add("coverage_mismatch", double(e.coverageMismatch));
+    if (linear) {
+      j.add("coverage_mismatch", double(e.coverageMismatch));
+      j.add("mean_ratio_r", e.meanRatio[0]).add("mean_ratio_g", e.meanRatio[1]).add("mean_ratio_b", e.meanRatio[2]);
+    }
     std::printf("%s\n", j.str().c_str());
   } else {
     std::printf("rmse_tonemapped   %.6g\n", e.rmseToneMapped);
     if (linear) std::printf("relative_rms      %.6g\n", e.relativeRms);
     std::printf("max_abs_error     %.6g\n", e.maxAbsError);
-    if (linear) std::printf("coverage_mismatch %zu of %zu covered pixels\n", e.coverageMismatch, e.coveredPixels);
+    if (linear) {
+      std::printf("coverage_mismatch %zu of %zu covered pixels\n", e.coverageMismatch, e.coveredPixels);
+      std::printf("mean_ratio        %.4g %.4g %.4g (R G B: test / reference, summed over covered pixels)\n",
+                  e.meanRatio[0], e.meanRatio[1], e.meanRatio[2]);
+    }
   }
   return 0;
 }

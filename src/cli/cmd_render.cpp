@@ -29,6 +29,7 @@ int runRender(int argc, char** argv) {
   for (auto& s : toneMapOptionSpecs()) specs.push_back(s);
   specs.push_back({"method", "NAME", "rendering technique (default reference)"});
   specs.push_back({"knob", "NAME=VALUE", "set one of the method's knobs", true});
+  specs.push_back({"spp", "N", "samples per pixel (the knob spp of pathtrace, the Monte Carlo method)"});
   specs.push_back({"out", "FILE", "output image: .exr (linear radiance, alpha = coverage) or .png (tone-mapped)", true});
   specs.push_back({"stats", "FILE.json", "write wall time, peak memory, sample counts and every knob as JSON"});
   specs.push_back({"quiet", "", "no progress bars"});
@@ -50,6 +51,7 @@ int runRender(int argc, char** argv) {
   std::map<std::string, std::string> given;
   for (const auto& k : args.all("knob"))
     for (const auto& [name, value] : render::parseKnobList(k)) given[name] = value;
+  if (args.has("spp")) given["spp"] = args.get("spp", "");
   const render::Knobs knobs(method.knobs, given, method.name);
 
   const Scene scene = buildScene(args);

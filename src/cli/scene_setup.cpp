@@ -44,9 +44,17 @@ scene::Light parseLight(const Args& args, const std::string& text, double diag, 
     return scene::DirectionalLight{glm::normalize(v), e};
   }
   if (kind == "env") {
-    if (first.empty()) args.fail("--light env: give an EXR file, e.g. env:studio.exr");
-    const image::Image img = io::readExr(first);
+    if (first.empty()) args.fail("--light env: give an EXR file, e.g. env:studio.exr, or env:uniform");
     scene::EnvironmentLight env;
+    if (first == "uniform") {  // radiance 1 (times SCALE) from every direction: the white-furnace light
+      env.width = env.height = 1;
+      env.radiance = {glm::vec3(1.0f)};
+      env.scale = second.empty() ? 1.0 : parseNumber(second, what);
+      env.source = "uniform";
+      description = "uniform environment";
+      return env;
+    }
+    const image::Image img = io::readExr(first);
     env.width = img.width;
     env.height = img.height;
     env.source = first;
@@ -64,7 +72,7 @@ std::vector<OptionSpec> sceneOptionSpecs() {
       {"mesh", "FILE", "mesh to render (.ply .obj .stl .vtp .vtk)"},
       {"shape", "NAME", std::string("built-in shape (default ") + kDefaultShape + "): sphere torus double-torus genus7 cube-cavity twirl slab"},
       {"size-mm", "X", "scale the object so its bounding-box diagonal is X mm (default 30)"},
-      {"light", "SPEC", "point:X,Y,Z[:R,G,B] | dir:X,Y,Z[:R,G,B] | env:FILE.exr[:SCALE] (mm; R,G,B = irradiance at the centre)", true},
+      {"light", "SPEC", "point:X,Y,Z[:R,G,B] | dir:X,Y,Z[:R,G,B] | env:FILE.exr[:SCALE] | env:uniform[:SCALE] (mm; R,G,B = irradiance at the centre)", true},
       {"view", "X,Y,Z", "direction from the object towards the camera (default 0,0.6,1)"},
       {"width", "W", "image width in pixels (default 400)"},
       {"height", "H", "image height in pixels (default 400)"},

@@ -9,13 +9,14 @@ Method jensenBuhlerMethod();
 Method tsisMethod();
 Method hybridMethod();
 Method tsmMethod();
+Method pathtraceMethod();
 #ifdef LUCENT_HAVE_TETGEN
 Method quadgraphMethod();
 #endif
 
 const std::vector<Method>& methods() {
   static const std::vector<Method> all{referenceMethod(), jensenBuhlerMethod(), tsisMethod(), hybridMethod(),
-                                         tsmMethod()
+                                         tsmMethod(), pathtraceMethod()
 #ifdef LUCENT_HAVE_TETGEN
                                              ,
                                          quadgraphMethod()

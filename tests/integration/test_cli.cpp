@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "io/exr_io.hpp"
 #include "temp_dir.hpp"
 
 namespace {
@@ -232,6 +233,42 @@ TEST_CASE("profile --method pathtrace: ring CSV with standard errors, totals bes
   }
   CHECK(rows.size() == 10);
   CHECK(contains(r.err, "total diffuse reflectance R: Monte Carlo"));
+}
+
+TEST_CASE("render --method pathtrace: image, standard error, nested inclusion, clear errors") {
+  lucent::test::TempDir dir;
+  const std::string stats = dir / "pt.json", se = dir / "se.exr";
+  const Run r = lucentCli("render --shape sphere --size-mm 3 --width 24 --height 24 --quiet --method pathtrace --spp 8 "
+                          "--knob inclusion=ketchup --knob density=noise:2 --knob stderr=" + se + " --out " + dir / "pt.exr" +
+                              " --stats " + stats,
+                          dir);
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const std::string json = slurp(stats);
+  CHECK(contains(json, "\"spp\": \"8\""));
+  CHECK(contains(json, "\"image_mean_relative_stderr\""));
+  CHECK(contains(r.err, "inclusion: Ketchup sphere"));
+  CHECK(contains(r.err, "light subpaths"));  // the default lights are delta lights behind eta 1.3: the note says so
+  CHECK_FALSE(contains(r.err, "disagreed"));
+  const lucent::image::Image img = lucent::io::readExr(dir / "pt.exr"), err = lucent::io::readExr(se);
+  std::size_t covered = 0;
+  for (std::size_t i = 0; i < img.pixels.size(); ++i)
+    if (img.covered(i)) {
+      ++covered;
+      CHECK(std::isfinite(img.pixels[i].r));
+      CHECK(err.pixels[i].r >= 0);
+    }
+  CHECK(covered > 100);
+
+  const Run bad = lucentCli("render --shape torus --quiet --method pathtrace --knob inclusion=marble --knob inclusion-radius=0.9 --out " +
+                                dir / "x.exr",
+                            dir);
+  CHECK(bad.code == 2);
+  CHECK(contains(bad.err, "not inside the object"));
+  CHECK_FALSE(std::filesystem::exists(dir / "x.exr"));
+  const Run badDensity = lucentCli("render --shape sphere --quiet --method pathtrace --knob density=fog.vdb --out " + dir / "x.exr", dir);
+  CHECK(badDensity.code == 2);
+  CHECK(contains(badDensity.err, "fog.vdb"));
 }
 
 #ifdef LUCENT_HAVE_TETGEN

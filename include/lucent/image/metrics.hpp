@@ -18,6 +18,7 @@ struct ImageErrors {
   double maxAbsError = 0;     ///< largest per-channel |a-b| of linear radiance
   std::size_t coveredPixels = 0;
   std::size_t coverageMismatch = 0;  ///< pixels covered in one image only
+  double meanRatio[3] = {0, 0, 0};   ///< per channel: sum of test / sum of reference over covered pixels (bias)
 };
 
 inline void requireSameSize(const Image& a, const Image& b) {
@@ -50,7 +51,7 @@ inline ImageErrors compareImages(const Image& test, const Image& reference, Tone
   if (toneMap.kind == ToneMap::Kind::Paper && !(toneMap.averageRadiance > 0))
     toneMap.averageRadiance = meanCoveredLuminance(reference);
   const double avg = toneMap.averageRadiance;
-  double sqTone = 0, sqDiff = 0, sqRef = 0;
+  double sqTone = 0, sqDiff = 0, sqRef = 0, sumTest[3] = {0, 0, 0}, sumRef[3] = {0, 0, 0};
   for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
     const glm::vec4 &a = test.pixels[i], &b = reference.pixels[i];
     const bool ca = test.covered(i), cb = reference.covered(i);
@@ -62,12 +63,14 @@ inline ImageErrors compareImages(const Image& test, const Image& reference, Tone
         const double d = double(a[c]) - double(b[c]);
         sqDiff += d * d;
         sqRef += double(b[c]) * double(b[c]);
+        sumTest[c] += double(a[c]), sumRef[c] += double(b[c]);
         e.maxAbsError = std::max(e.maxAbsError, std::abs(d));
       }
     }
     if (ca || cb) ++e.coveredPixels;
   }
   e.rmseToneMapped = reference.pixels.empty() ? 0 : std::sqrt(sqTone / (3.0 * double(reference.pixels.size())));
+  for (int c = 0; c < 3; ++c) e.meanRatio[c] = sumRef[c] > 0 ? sumTest[c] / sumRef[c] : 0.0;
   e.relativeRms = sqRef > 0 ? std::sqrt(sqDiff / sqRef) : (sqDiff > 0 ? std::numeric_limits<double>::infinity() : 0.0);
   return e;
 }
