@@ -145,6 +145,15 @@ std::vector<double> targetEdgeLength(const scene::TetMesh& m, double gradingK) {
   return size;
 }
 
+/// Copies the points into TetGen's input (which owns and frees the array).
+template <class Point>
+void setPoints(tetgenio& in, const std::vector<Point>& points) {
+  in.numberofpoints = int(points.size());
+  in.pointlist = new REAL[points.size() * 3];
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (int k = 0; k < 3; ++k) in.pointlist[3 * i + std::size_t(k)] = points[i][k];
+}
+
 /// TetGen's refine mode (-r) with a volume target per tet from targetEdgeLength (a regular tet of edge h
 /// has volume h^3 / (6 sqrt 2)). The Steiner budget is twice the point count the targets ask for, so a
 /// surface TetGen cannot satisfy (e.g. tiny contour triangles under -Y) stops early instead of hanging.
@@ -152,10 +161,7 @@ scene::TetMesh refineToSize(const scene::TetMesh& mesh, const TetOptions& option
   const std::vector<double> target = targetEdgeLength(mesh, options.gradingK);
   tetgenio in, out;
   in.firstnumber = 0;
-  in.numberofpoints = int(mesh.positions.size());
-  in.pointlist = new REAL[mesh.positions.size() * 3];
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-    for (int k = 0; k < 3; ++k) in.pointlist[3 * i + k] = mesh.positions[i][k];
+  setPoints(in, mesh.positions);
   in.numberoftetrahedra = int(mesh.tets.size());
   in.numberofcorners = 4;
   in.tetrahedronlist = new int[mesh.tets.size() * 4];
@@ -190,10 +196,7 @@ scene::TetMesh tetrahedralize(const scene::TriangleMesh& surface, const TetOptio
   if (surface.triangles.empty()) throw InputError("tetrahedralize: the surface has no triangles");
   tetgenio in, out;
   in.firstnumber = 0;
-  in.numberofpoints = int(surface.positions.size());
-  in.pointlist = new REAL[surface.positions.size() * 3];
-  for (std::size_t i = 0; i < surface.positions.size(); ++i)
-    for (int k = 0; k < 3; ++k) in.pointlist[3 * i + k] = surface.positions[i][k];
+  setPoints(in, surface.positions);
   in.numberoffacets = int(surface.triangles.size());
   in.facetlist = new tetgenio::facet[surface.triangles.size()];
   for (std::size_t t = 0; t < surface.triangles.size(); ++t) {

@@ -52,7 +52,7 @@ struct EmissionSample {
 class GuidedDisc {
  public:
   GuidedDisc(const glm::dvec3& centre, const glm::dvec3& axis, double radius, const glm::dvec3& guide, double guideRadius)
-      : mCentre(centre), mAxis(axis), mRadius(radius), mGuide(guide), mScale(std::max(guideRadius, 1e-9 * radius)) {
+      : mCentre(centre), mRadius(radius), mGuide(guide), mScale(std::max(guideRadius, 1e-9 * radius)) {
     util::orthonormalBasis(axis, mE1, mE2);
   }
   glm::dvec3 sample(util::Rng& rng) const {
@@ -68,7 +68,7 @@ class GuidedDisc {
   }
 
  private:
-  glm::dvec3 mCentre, mAxis;
+  glm::dvec3 mCentre;
   double mRadius;
   glm::dvec3 mGuide;
   double mScale;

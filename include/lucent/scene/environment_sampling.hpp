@@ -43,16 +43,6 @@ class EnvironmentSampler {
     // The layout of EnvironmentLight::lookup: theta from +y, phi = atan2(x, -z).
     return {sinTheta * std::sin(phi), cosTheta, -sinTheta * std::cos(phi)};
   }
-  /// The pdf `sample` gives for a direction.
-  double pdf(const glm::dvec3& dir) const {
-    const double theta = std::acos(std::clamp(dir.y, -1.0, 1.0));
-    double phi = std::atan2(dir.x, -dir.z);
-    if (phi < 0) phi += 2 * optics::kPi;
-    const int col = std::min(mEnv->width - 1, int(phi / (2 * optics::kPi) * mEnv->width));
-    const int row = std::min(mEnv->height - 1, int(theta / optics::kPi * mEnv->height));
-    const std::size_t i = std::size_t(row) * mEnv->width + col;
-    return (mCdf[i + 1] - mCdf[i]) / mTotal / pixelSolidAngle(row);
-  }
 
  private:
   double pixelSolidAngle(int row) const {
