@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "../optics/fresnel.hpp"
+#include "../optics/diffusion_boundary.hpp"
 #include "quad_graph.hpp"
 
 namespace lucent::quadgraph {
@@ -62,7 +62,7 @@ struct DiffusionSystem {
   std::vector<T> weight;    ///< c_ij, 4 per node
   std::vector<T> diagonal;  ///< sum_j c_ij + a_i (+ b_s)
   std::vector<T> robin;     ///< b_s at surface nodes, 0 at inner nodes
-  double sourceScale = 0;   ///< 4 / (1 - Fdr): Q = sourceScale * q
+  double sourceScale = 0;   ///< Q = sourceScale * q (Eq. 2)
   double fdr = 0;
   Stencil stencil = Stencil::FiniteVolume;
 
@@ -125,7 +125,7 @@ DiffusionSystem<T> assemble(const QuadGraph& g, const NodeMedium& m, double eta,
   sys.nodeCount = n;
   sys.stencil = stencil;
   sys.fdr = optics::diffuseFresnelReflectance(eta);
-  sys.sourceScale = 4.0 / (1.0 - sys.fdr);
+  sys.sourceScale = optics::diffusionBoundarySource(1.0, sys.fdr);
   const double boundaryA = optics::boundaryMismatch(eta);
   sys.neighbour.resize(4 * n);
   sys.weight.assign(4 * n, T(0));
@@ -175,8 +175,8 @@ DiffusionSystem<T> assemble(const QuadGraph& g, const NodeMedium& m, double eta,
   return sys;
 }
 
-/// Outgoing radiance factor at the surface nodes, Eq. 7: L_o = Ft(w_o) B_s / pi with
-/// B_s = (phi_s - 2 q_s) / (2 (1 + Fdr)), the same convention as the dipole's L = Ft B / pi.
+/// Outgoing radiance factor at the surface nodes, Eq. 7 with the transmitted fraction (1 - Fdr) that the
+/// printed equation leaves out (optics/diffusion_boundary.hpp): L_o = Ft(w_o) B_s / pi, as the dipole's.
 /// Negative values (possible where the discretization is too coarse for the absorption) are clamped to 0
 /// and counted in *clamped.
 template <class T>
@@ -185,7 +185,7 @@ std::vector<double> surfaceRadiosity(const DiffusionSystem<T>& sys, const std::v
   std::vector<double> b(q.size());
   std::size_t negative = 0;
   for (std::size_t s = 0; s < q.size(); ++s) {
-    const double v = (double(phi[sys.innerCount + s]) - 2 * q[s]) / (2 * (1 + sys.fdr));
+    const double v = optics::diffusionBoundaryRadiosity(double(phi[sys.innerCount + s]), q[s], sys.fdr);
     negative += v < 0;
     b[s] = std::max(0.0, v);
   }

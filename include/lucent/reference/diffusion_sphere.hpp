@@ -6,7 +6,7 @@
 /// phi(R) + 2 A kappa phi'(R) = 4 q / (1 - Fdr) fixes C. mu = 0 (Laplace) gives phi = 4 q / (1 - Fdr).
 #include <cmath>
 
-#include "../optics/fresnel.hpp"
+#include "../optics/diffusion_boundary.hpp"
 
 namespace lucent::reference {
 
@@ -16,7 +16,7 @@ class DiffusionSphere {
   DiffusionSphere(double radius, double sigmaA, double sigmaSPrime, double eta, double q)
       : mR(radius), mKappa(1.0 / (3.0 * (sigmaA + sigmaSPrime))), mK(std::sqrt(sigmaA / mKappa)),
         mA(optics::boundaryMismatch(eta)), mFdr(optics::diffuseFresnelReflectance(eta)),
-        mQ(4.0 * q / (1.0 - optics::diffuseFresnelReflectance(eta))), mIrradiance(q) {
+        mQ(optics::diffusionBoundarySource(q, mFdr)), mIrradiance(q) {
     // phi(r) = Q f(r) / (f(R) + 2 A kappa f'(R)) with f(r) = sinh(kr) / (kr) (-> 1 as k -> 0, so mu = 0 is
     // the same formula), all scaled by e^{-kR} so that large kR (dense media, big spheres) cannot overflow.
     const double x = mK * mR, e2 = std::exp(-2 * x);
@@ -33,8 +33,8 @@ class DiffusionSphere {
     return mScaledC * (std::exp(mK * (r - mR)) - std::exp(-mK * (r + mR))) / (2 * x);
   }
 
-  /// B at the surface from Eq. 7, the radiosity in L = Ft B / pi.
-  double surfaceRadiosity() const { return (flux(mR) - 2 * mIrradiance) / (2 * (1 + mFdr)); }
+  /// B at the surface (Eq. 7 with the transmitted fraction), the radiosity in L = Ft B / pi.
+  double surfaceRadiosity() const { return optics::diffusionBoundaryRadiosity(flux(mR), mIrradiance, mFdr); }
   double kappa() const { return mKappa; }
   double k() const { return mK; }
 
