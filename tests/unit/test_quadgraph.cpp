@@ -10,6 +10,7 @@
 #include <lucent/optics/materials.hpp>
 #include <lucent/quadgraph/block_packing.hpp>
 #include <lucent/quadgraph/multiresolution.hpp>
+#include <lucent/quadgraph/node_surface.hpp>
 #include <lucent/reference/diffusion_sphere.hpp>
 #include <lucent/scene/voxel_grid.hpp>
 
@@ -138,6 +139,16 @@ TEST_CASE("Both stencils give a symmetric system; the finite-volume one conserve
       // No absorption: what enters leaves. Sum_s b_s (Q_s - phi_s) = 0, and b_s = A_f / (2A) here, so the
       // area-weighted mean of phi over the surface equals that of Q.
       CHECK(energyImbalance(sys, q, phi) < 1e-8);
+      // And the radiosity Eq. 7 hands to the renderer carries exactly that light out: sum A B = sum A q.
+      // (Eq. 7 as printed, without the transmitted fraction 1 - Fdr, would give 1.8x at eta 1.3.)
+      const auto radiosity = quadgraph::surfaceRadiosity(sys, phi, q);
+      double in = 0, out = 0;
+      for (std::size_t s = 0; s < q.size(); ++s) {
+        const double area = g.faceArea[4 * g.surfaceInner[s] + g.surfaceSlot[s]];
+        in += area * q[s];
+        out += area * radiosity[s];
+      }
+      CHECK(out == doctest::Approx(in).epsilon(1e-8));
     }
   }
 }
@@ -309,4 +320,44 @@ TEST_CASE("A scanned volume as the medium: sigma from a VoxelGrid, energy still 
   const auto phi = solveTight(sys, sys.rhs(q));
   CHECK(energyImbalance(sys, q, phi) < 1e-8);
   for (double v : phi) REQUIRE((std::isfinite(v) && v >= 0));
+}
+
+TEST_CASE("Sec. 5.3 display surface: the surface nodes triangulated, closed, outward, genus kept, follows deform()") {
+  auto g = quadgraph::buildQuadGraph(kuhnBox(3, 2.0));
+  quadgraph::relax(g, 2);
+  const auto surface = quadgraph::triangulateSurfaceNodes(g);
+  CHECK(surface.openFans == 0);
+  // Euler: F nodes, 2F - 4 triangles for a genus-0 boundary; every edge in exactly two triangles, once
+  // in each direction (a closed, consistently oriented 2-manifold).
+  const std::size_t nodes = g.surfaceCount();
+  CHECK(surface.triangles.size() == 2 * nodes - 4);
+  std::map<std::pair<unsigned, unsigned>, int> directed;
+  for (const auto& t : surface.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      REQUIRE(t[k] < nodes);
+      ++directed[{t[k], t[(k + 1) % 3]}];
+    }
+    CHECK((t.x != t.y && t.y != t.z && t.x != t.z));
+  }
+  for (const auto& [edge, count] : directed) {
+    CHECK(count == 1);
+    CHECK(directed.count({edge.second, edge.first}) == 1);
+  }
+  // Outward: the enclosed volume is positive and a little below the box's 216 mm^3 (nodes sit on faces, the
+  // dual surface cuts the corners), and every vertex is a node on the box's surface.
+  const auto volumeOf = [](const scene::TriangleMesh& m) {
+    double v = 0;
+    for (const auto& t : m.triangles)
+      v += glm::dot(glm::dvec3(m.positions[t.x]), glm::cross(glm::dvec3(m.positions[t.y]), glm::dvec3(m.positions[t.z]))) / 6;
+    return v;
+  };
+  const auto mesh = surface.mesh(g);
+  const double volume = volumeOf(mesh);
+  CHECK(volume > 0.8 * 216);
+  CHECK(volume < 216);
+  // After a deformation (a stretch by 2 along x) the same triangles at the moved nodes enclose twice the volume.
+  std::vector<glm::dvec3> moved(g.vertices.begin(), g.vertices.begin() + std::ptrdiff_t(g.inputVertexCount));
+  for (auto& p : moved) p.x *= 2;
+  g.deform(moved);
+  CHECK(volumeOf(surface.mesh(g)) == doctest::Approx(2 * volume).epsilon(1e-9));
 }
