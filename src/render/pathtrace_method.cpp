@@ -12,7 +12,7 @@
 #include "../util/error.hpp"
 #include "../util/progress_bar.hpp"
 #include "../util/tbb_parallel.hpp"
-#include "../vdb/vdb_io.hpp"
+#include "density_field.hpp"
 #include "methods.hpp"
 
 namespace lucent::render {
@@ -20,47 +20,6 @@ namespace lucent::render {
 namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-/// "noise:F" (a smooth field in [0.1, 1] with F periods across the object) or "FILE.vdb[:GRID]" (its
-/// index box fitted to the mesh's bounding box, values divided by their maximum). Empty = homogeneous.
-void applyDensity(reference::Medium& medium, const std::string& spec, const scene::Bounds& bounds, RenderResult& out) {
-  if (spec.empty()) return;
-  if (spec.rfind("noise:", 0) == 0) {
-    double periods = 0;
-    try {
-      periods = std::stod(spec.substr(6));
-    } catch (const std::exception&) {
-    }
-    if (!(periods > 0)) throw InputError("method 'pathtrace' knob density=noise:F needs F > 0, e.g. noise:3");
-    const double k = 2 * optics::kPi * periods / bounds.diagonal();
-    const glm::dvec3 lo = bounds.lo;
-    medium.density = [k, lo](const glm::dvec3& p) {
-      const glm::dvec3 q = k * (p - lo);
-      return 0.55 + 0.45 * std::sin(q.x) * std::sin(q.y + 1.0) * std::sin(q.z + 2.0);
-    };
-    medium.maxDensity = 1;
-    out.notes.push_back("density: procedural, " + spec.substr(6) + " periods across the object, in [0.1, 1]");
-    return;
-  }
-  const auto colon = spec.find(".vdb:");
-  const std::string path = colon == std::string::npos ? spec : spec.substr(0, colon + 4);
-  const std::string grid = colon == std::string::npos ? "" : spec.substr(colon + 5);
-  if (path.size() < 4 || path.substr(path.size() - 4) != ".vdb")
-    throw InputError("method 'pathtrace' knob density='" + spec + "': give noise:F or an OpenVDB file FILE.vdb[:GRID]");
-  auto voxels = std::make_shared<scene::VoxelGrid>(vdb::readFloatGrid(path, grid));
-  double maxValue = 0;
-  for (float v : voxels->values) maxValue = std::max(maxValue, double(v));
-  if (!(maxValue > 0)) throw InputError(path + ": the density grid has no positive value; a medium needs density > 0 somewhere");
-  const glm::dvec3 lo = bounds.lo, extent = bounds.hi - bounds.lo;
-  medium.density = [voxels, maxValue, lo, extent](const glm::dvec3& p) {
-    const glm::dvec3 u = (p - lo) / extent;
-    const glm::dvec3 local = voxels->origin + u * glm::dvec3(voxels->dims - 1) * voxels->voxelSize;
-    return voxels->sample(local) / maxValue;
-  };
-  medium.maxDensity = 1;
-  out.notes.push_back("density: " + path + " (" + std::to_string(voxels->dims.x) + "x" + std::to_string(voxels->dims.y) + "x" +
-                      std::to_string(voxels->dims.z) + " voxels fitted to the mesh's bounding box, divided by its maximum)");
-}
 
 /// Whether a point lies inside the closed mesh (odd crossings along +x).
 bool inside(const scene::RayCaster& caster, glm::dvec3 p, double epsilon) {
@@ -96,7 +55,7 @@ Method pathtraceMethod() {
            {"light-paths", "1", "light subpaths per delta light and camera sample (behind a refracting boundary)"},
            {"guide-radius", "0", "mm: spread of light entry points around the camera's (0 = 1/sigma_tr of the material)"},
            {"max-events", "200000", "surface and scattering events per path before it is dropped (counted)"},
-           {"density", "", "noise:F (procedural field) or FILE.vdb[:GRID] (fitted to the bounding box); empty = homogeneous"},
+           {"density", "", "noise:F (procedural field), FILE.vdb[:GRID] or FILE.vti[:ARRAY] (fitted to the bounding box); empty = homogeneous"},
            {"inclusion", "", "a material name: a sphere of it at the bounding-box centre, inside the object"},
            {"inclusion-radius", "0.3", "radius of the inclusion as a fraction of half the smallest box extent"},
            {"stderr", "", "write the per-pixel standard error image to this EXR file"}},
@@ -123,7 +82,11 @@ Method pathtraceMethod() {
             reference::MediumScene media;
             reference::Medium material = reference::mediumFromMaterial(scene.material, g);
             if (matched) material.eta = 1;
-            applyDensity(material, knobs.text("density"), bounds, out);
+            if (const auto field = parseDensityField("pathtrace", "density", knobs.text("density"), bounds)) {
+              material.density = field.at;
+              material.maxDensity = 1;
+              out.notes.push_back("density: " + field.description);
+            }
             const auto materialId = media.addMedium(material);
             media.addBody(scene.mesh, materialId, 0);
             if (!knobs.text("inclusion").empty()) {

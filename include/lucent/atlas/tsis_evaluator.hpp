@@ -12,6 +12,7 @@
 
 #include "../optics/fresnel_table.hpp"
 #include "../reference/dipole_truth.hpp"
+#include "../reference/vertex_radiosity.hpp"
 #include "importance_samples.hpp"
 #include "radial_sum.hpp"
 
@@ -68,9 +69,7 @@ class PerVertexShading {
   }
 
   glm::dvec3 radiance(const reference::ShadingPoint& hit) const {
-    const auto& tri = mMesh.triangles[hit.triangle];
-    const glm::dvec3 b = (1 - hit.u - hit.v) * mB[tri.x] + hit.u * mB[tri.y] + hit.v * mB[tri.z];
-    return b * mEval.fresnelOverPi(hit.cosOut);
+    return reference::interpolateAtHit(mMesh, mB, hit) * mEval.fresnelOverPi(hit.cosOut);
   }
   const std::vector<glm::dvec3>& vertexRadiosity() const { return mB; }
 

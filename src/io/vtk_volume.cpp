@@ -1,0 +1,83 @@
+#include "vtk_volume.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkStructuredPoints.h>
+#include <vtkStructuredPointsReader.h>
+#include <vtkXMLImageDataReader.h>
+
+#include "../util/error.hpp"
+
+namespace lucent::io {
+
+namespace {
+bool endsWith(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+}  // namespace
+
+scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arrayName) {
+  if (!std::filesystem::is_regular_file(path))
+    throw InputError(path + ": no such file; give an existing .vti (VTK XML image data) volume");
+  vtkImageData* image = nullptr;
+  vtkNew<vtkXMLImageDataReader> xml;
+  vtkNew<vtkStructuredPointsReader> legacy;
+  if (endsWith(path, ".vti")) {
+    if (!xml->CanReadFile(path.c_str()))
+      throw InputError(path + ": not a VTK XML image-data file; save the volume from ParaView as .vti");
+    xml->SetFileName(path.c_str());
+    xml->Update();
+    image = xml->GetOutput();
+  } else if (endsWith(path, ".vtk")) {
+    legacy->SetFileName(path.c_str());
+    legacy->Update();
+    image = legacy->GetOutput();
+  } else {
+    throw InputError(path + ": unknown volume extension; give a .vti (or legacy .vtk structured points) file");
+  }
+  int dims[3] = {0, 0, 0};
+  if (image) image->GetDimensions(dims);
+  if (!image || dims[0] * std::size_t(dims[1]) * std::size_t(dims[2]) == 0)
+    throw InputError(path + ": the volume is empty or could not be read; check the file in ParaView");
+  vtkPointData* pd = image->GetPointData();
+  vtkDataArray* array = arrayName.empty() ? pd->GetScalars() : pd->GetArray(arrayName.c_str());
+  if (!array && arrayName.empty() && pd->GetNumberOfArrays() > 0) array = pd->GetArray(0);
+  if (!array) {
+    std::string names;
+    for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
+      names += (i ? ", " : "") + std::string(pd->GetArrayName(i) ? pd->GetArrayName(i) : "(unnamed)");
+    throw InputError(path + ": no point-data array '" + arrayName + "'; the file has: " +
+                     (names.empty() ? "none (cell data is not read; convert with Cell Data to Point Data)" : names));
+  }
+  double spacing[3], origin[3];
+  image->GetSpacing(spacing);
+  image->GetOrigin(origin);
+  const double h = spacing[0];
+  if (!(h > 0) || std::abs(spacing[1] - h) > 1e-6 * h || std::abs(spacing[2] - h) > 1e-6 * h)
+    throw InputError(path + ": voxels are " + std::to_string(spacing[0]) + " x " + std::to_string(spacing[1]) + " x " +
+                     std::to_string(spacing[2]) + "; lucent needs cubic voxels (resample with vtkImageResample)");
+  scene::VoxelGrid grid;
+  grid.dims = {dims[0], dims[1], dims[2]};
+  grid.origin = {origin[0], origin[1], origin[2]};
+  grid.voxelSize = h;
+  const vtkIdType n = array->GetNumberOfTuples();
+  grid.values.resize(std::size_t(n));
+  const int components = array->GetNumberOfComponents();
+  for (vtkIdType i = 0; i < n; ++i) {
+    double sum = 0;
+    for (int c = 0; c < components; ++c) sum += array->GetComponent(i, c) * array->GetComponent(i, c);
+    const double v = components == 1 ? array->GetComponent(i, 0) : std::sqrt(sum);
+    if (!std::isfinite(v))
+      throw InputError(path + ": voxel " + std::to_string(i) + " of '" + std::string(array->GetName() ? array->GetName() : "scalars") +
+                       "' is not finite; replace NaN/inf (e.g. ParaView's Calculator) before using it as a medium");
+    grid.values[std::size_t(i)] = float(v);  // VTK point ids run x fastest, as VoxelGrid's
+  }
+  return grid;
+}
+
+}  // namespace lucent::io

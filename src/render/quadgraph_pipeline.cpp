@@ -1,0 +1,174 @@
+#include "quadgraph_pipeline.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include <lucent/quadgraph/block_packing.hpp>
+#include <lucent/quadgraph/surface_mapping.hpp>
+#include <lucent/scene/irradiance.hpp>
+
+#include "../io/vtk_quadgraph.hpp"
+#include "../tetgen/tetrahedralize.hpp"
+#include "../util/error.hpp"
+#include "../util/progress_bar.hpp"
+#include "../util/tbb_parallel.hpp"
+
+namespace lucent::render {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::vector<glm::dvec3> surfacePositions(const quadgraph::QuadGraph& g) {
+  return {g.positions.begin() + std::ptrdiff_t(g.innerCount()), g.positions.end()};
+}
+}  // namespace
+
+QuadGraphPipeline::QuadGraphPipeline(const scene::TriangleMesh& mesh, const std::string& meshName,
+                                     const QuadGraphOptions& options, std::vector<std::string>& notes, bool progress)
+    : mOptions(options) {
+  tetgen::TetOptions tet;
+  tet.gradingK = options.gradingK;
+  tet.radiusEdgeRatio = options.quality;
+  util::ProgressBar bar("tetrahedralize + QuadGraph", progress);
+  for (int h = 0; h < options.levels; ++h) {
+    Level level;
+    // Each coarser level has about a quarter of the triangles (Sec. 4.3).
+    const std::size_t target = mesh.triangles.size() >> (2 * h);
+    if (h > 0 && target < 64) {
+      notes.push_back("quadgraph: stopped at " + std::to_string(h) + " levels (a coarser surface would have < 64 triangles)");
+      break;
+    }
+    level.surface = h == 0 ? mesh : io::decimate(mesh, target);
+    try {
+      tetgen::TetReport report;
+      const scene::TetMesh tm = tetgen::tetrahedralize(level.surface, tet, &report);
+      level.tets = tm.tets.size();
+      if (report.budgetLimited())
+        notes.push_back("quadgraph: level " + std::to_string(h) + ": TetGen stopped at its point budget (" +
+                        std::to_string(report.steinerBudget) + "); the sizes K asks for are not met near the "
+                        "smallest surface triangles (remesh the surface more evenly, e.g. vtkQuadricDecimation)");
+      level.graph = quadgraph::buildQuadGraph(tm);
+    } catch (const std::exception& e) {
+      if (h == 0) throw InputError(std::string(e.what()) + " (mesh " + meshName + ")");
+      notes.push_back("quadgraph: level " + std::to_string(h) + " dropped: its decimated surface failed (" + e.what() +
+                      "); using " + std::to_string(h) + " levels");
+      break;
+    }
+    if (options.relaxIterations > 0) quadgraph::relax(level.graph, options.relaxIterations);
+    if (options.packing == "blocks") quadgraph::packBlocks(level.graph, options.blockSide);
+    if (options.packing == "random") quadgraph::shuffleNodes(level.graph);
+    mLevels.push_back(std::move(level));
+    bar.update(double(h + 1) / options.levels);
+  }
+  bar.finish();
+  std::reverse(mLevels.begin(), mLevels.end());
+  for (const auto& level : mLevels)
+    mRestVertices.emplace_back(level.graph.vertices.begin(),
+                               level.graph.vertices.begin() + std::ptrdiff_t(level.graph.inputVertexCount));
+  computeTransfers();
+  mBary = quadgraph::sourceBarycentrics(finest(), mesh);
+  mNodeSurface = quadgraph::triangulateSurfaceNodes(finest());
+  if (mNodeSurface.openFans > 0)
+    notes.push_back("quadgraph: " + std::to_string(mNodeSurface.openFans) +
+                    " boundary vertices have an open fan of faces; the node surface (display=nodes) has holes there");
+}
+
+void QuadGraphPipeline::computeTransfers() {
+  mTransfers.clear();
+  for (std::size_t h = 0; h + 1 < mLevels.size(); ++h)
+    mTransfers.push_back(quadgraph::levelTransfer(mLevels[h].graph, mLevels[h + 1].graph));
+  // Irradiance is evaluated once, at the finest surface nodes; coarser levels get it by Eq. 10's weights
+  // from there (b = 4), so shadow rays never start from a decimated surface.
+  mRestrictQ.assign(mLevels.size(), {});
+  for (std::size_t h = 0; h + 1 < mLevels.size(); ++h)
+    mRestrictQ[h] = quadgraph::shepardWeights(surfacePositions(finest()), surfacePositions(mLevels[h].graph), 4);
+}
+
+std::vector<glm::dvec3> QuadGraphPipeline::irradiance(const scene::TriangleMesh& mesh,
+                                                      const std::vector<glm::vec3>& vertexNormals,
+                                                      const std::vector<scene::Light>& lights,
+                                                      const scene::RayCaster& caster, double eta) const {
+  const quadgraph::QuadGraph& fine = finest();
+  scene::IrradianceSettings irr;
+  irr.eta = eta;
+  irr.rayEpsilon = 1e-5 * mesh.bounds().diagonal();
+  irr.environmentStrata = mOptions.environmentStrata;
+  std::vector<glm::dvec3> q(fine.surfaceCount());
+  util::tbbFor(q.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t s = begin; s < end; ++s) {
+      const std::uint32_t tri = fine.surfaceSource[s];
+      const glm::dvec3 faceN = glm::normalize(mesh.areaVector(tri));
+      const glm::dvec3 n = scene::shadingNormal(mesh, vertexNormals, tri, mBary[s]);
+      q[s] = scene::irradianceAt(fine.positions[fine.innerCount() + s], n, faceN, lights, caster, irr, s);
+    }
+  });
+  return q;
+}
+
+QuadGraphFrame QuadGraphPipeline::solve(const std::vector<glm::dvec3>& qFine, const MediumField& medium, double eta,
+                                        bool progress) const {
+  const quadgraph::QuadGraph& fine = finest();
+  QuadGraphFrame out;
+  out.radiosity.assign(fine.surfaceCount(), glm::dvec3(0));
+  out.flux.resize(3), out.kappa.resize(3), out.mu.resize(3), out.reports.resize(3);
+  util::ProgressBar bar("diffusion solve", progress);
+  for (int c = 0; c < 3; ++c) {
+    const auto ta = Clock::now();
+    const auto field = [&](const glm::dvec3& p) { return medium(p, c); };
+    std::vector<quadgraph::DiffusionSystem<double>> systems;
+    std::vector<quadgraph::LevelProblem<double>> problems(mLevels.size());
+    std::vector<std::vector<double>> q(mLevels.size());
+    for (std::size_t h = 0; h < mLevels.size(); ++h) {
+      const auto nodeMedium = quadgraph::sampleMedium(mLevels[h].graph, field);
+      systems.push_back(quadgraph::assemble<double>(mLevels[h].graph, nodeMedium, eta, mOptions.stencil));
+      if (h + 1 == mLevels.size()) out.kappa[std::size_t(c)] = nodeMedium.kappa, out.mu[std::size_t(c)] = nodeMedium.mu;
+    }
+    for (std::size_t h = 0; h < mLevels.size(); ++h) {
+      std::vector<double> qc(fine.surfaceCount());
+      for (std::size_t s = 0; s < qc.size(); ++s) qc[s] = qFine[s][c];
+      if (h + 1 < mLevels.size()) {
+        std::vector<double> coarse(mLevels[h].graph.surfaceCount());
+        mRestrictQ[h].apply(qc.data(), coarse.data(), coarse.size());
+        qc = std::move(coarse);
+      }
+      q[h] = std::move(qc);
+      problems[h].system = &systems[h];
+      problems[h].rhs = systems[h].rhs(q[h]);
+      if (mOptions.solver == quadgraph::Solver::Sor) problems[h].colours = quadgraph::colourRows(systems[h]);
+    }
+    out.assembleSeconds += since(ta);
+    const auto ts = Clock::now();
+    std::vector<double> phi;
+    out.reports[std::size_t(c)] =
+        quadgraph::solveMultiresolution(mOptions.solver, problems, mTransfers, phi, mOptions.solve, util::tbbFor);
+    out.solveSeconds += since(ts);
+    std::size_t clamped = 0;
+    const auto b = quadgraph::surfaceRadiosity(systems.back(), phi, q.back(), &clamped);
+    out.clampedNodes += clamped;
+    for (std::size_t s = 0; s < b.size(); ++s) out.radiosity[s][c] = b[s];
+    out.flux[std::size_t(c)] = std::move(phi);
+    bar.update((c + 1) / 3.0);
+  }
+  bar.finish();
+  return out;
+}
+
+void QuadGraphPipeline::deform(const std::function<glm::dvec3(const glm::dvec3&)>& map) {
+  for (std::size_t h = 0; h < mLevels.size(); ++h) {
+    Level& level = mLevels[h];
+    const std::vector<glm::dvec3>& rest = mRestVertices[h];
+    std::vector<glm::dvec3> moved(rest.size());
+    for (std::size_t v = 0; v < rest.size(); ++v) moved[v] = map(rest[v]);
+    level.graph.deform(moved);
+  }
+  computeTransfers();
+}
+
+double QuadGraphPipeline::solverBytes() const {
+  double bytes = 0;
+  for (const auto& l : mLevels) bytes += double(l.graph.nodeCount()) * (4 * 4 + 4 * 8 + 8 + 8 + 2 * 8);
+  return bytes;
+}
+
+}  // namespace lucent::render
