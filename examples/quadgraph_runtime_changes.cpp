@@ -73,9 +73,10 @@ int main(int argc, char** argv) try {
   std::vector<image::Image> frames;
   scene::TriangleMesh mesh = scene.mesh;  // the input surface, bent along with the graph for shadow rays
   std::unique_ptr<scene::RayCaster> caster = std::make_unique<raycast::EmbreeRayCaster>(mesh);
+  std::vector<glm::vec3> normals = mesh.vertexNormals();  // recomputed only when the mesh bends
   auto render = [&](const std::vector<scene::Light>& lights, const optics::Material& material, Row row) {
     auto t0 = Clock::now();
-    const auto q = pipeline.irradiance(mesh, mesh.vertexNormals(), lights, *caster, material.eta);
+    const auto q = pipeline.irradiance(mesh, normals, lights, *caster, material.eta);
     row.irradiance = since(t0);
     const auto frame = pipeline.solve(q, homogeneous(material), material.eta, false);
     row.assemble = frame.assembleSeconds;
@@ -107,6 +108,7 @@ int main(int argc, char** argv) try {
     pipeline.deform([&](const glm::dvec3& p) { return bend(p, curvature); });
     for (std::size_t v = 0; v < mesh.positions.size(); ++v) mesh.positions[v] = glm::vec3(bend(glm::dvec3(rest[v]), curvature));
     caster = std::make_unique<raycast::EmbreeRayCaster>(mesh);
+    normals = mesh.vertexNormals();
     Row row{"bend " + std::to_string(int(std::lround(curvature * 1000))) + "/m"};
     row.geometry = since(t);
     render(scene.lights, scene.material, row);

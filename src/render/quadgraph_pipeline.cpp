@@ -39,10 +39,11 @@ QuadGraphPipeline::QuadGraphPipeline(const scene::TriangleMesh& mesh, const std:
       notes.push_back("quadgraph: stopped at " + std::to_string(h) + " levels (a coarser surface would have < 64 triangles)");
       break;
     }
-    level.surface = h == 0 ? mesh : io::decimate(mesh, target);
+    const scene::TriangleMesh decimated = h == 0 ? scene::TriangleMesh{} : io::decimate(mesh, target);
+    const scene::TriangleMesh& surface = h == 0 ? mesh : decimated;
     try {
       tetgen::TetReport report;
-      const scene::TetMesh tm = tetgen::tetrahedralize(level.surface, tet, &report);
+      const scene::TetMesh tm = tetgen::tetrahedralize(surface, tet, &report);
       level.tets = tm.tets.size();
       if (report.budgetLimited())
         notes.push_back("quadgraph: level " + std::to_string(h) + ": TetGen stopped at its point budget (" +

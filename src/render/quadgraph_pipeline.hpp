@@ -46,7 +46,6 @@ struct QuadGraphFrame {
 class QuadGraphPipeline {
  public:
   struct Level {
-    scene::TriangleMesh surface;
     quadgraph::QuadGraph graph;
     std::size_t tets = 0;
   };

@@ -6,18 +6,19 @@
 #include <glm/geometric.hpp>
 #include <vtkPolyData.h>
 
-vtkLucentRayCaster::vtkLucentRayCaster(vtkPolyData* triangles) : Triangles(triangles) {
+vtkLucentRayCaster::vtkLucentRayCaster(vtkPolyData* triangles) {  // the locator holds a reference to it
   this->Locator->SetDataSet(triangles);
   this->Locator->BuildLocator();
   this->Reach = 2 * triangles->GetLength();
+  double centre[3];
+  triangles->GetCenter(centre);
+  this->Centre = {centre[0], centre[1], centre[2]};
 }
 
 std::optional<lucent::scene::RayHit> vtkLucentRayCaster::intersect(const glm::dvec3& origin, const glm::dvec3& direction,
                                                                    double tMin, double tMax) const {
-  double centre[3];
-  this->Triangles->GetCenter(centre);
   // A segment long enough to leave the data from wherever the ray starts stands in for an infinite ray.
-  const double farthest = this->Reach + glm::length(origin - glm::dvec3(centre[0], centre[1], centre[2]));
+  const double farthest = this->Reach + glm::length(origin - this->Centre);
   const double tEnd = std::min(tMax, farthest);
   if (!(tEnd > tMin)) return std::nullopt;
   const glm::dvec3 a = origin + direction * tMin, b = origin + direction * tEnd;

@@ -8,7 +8,6 @@
 #include <mutex>
 
 #include <vtkNew.h>
-#include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
 
 #include <lucent/scene/ray_caster.hpp>
@@ -26,9 +25,9 @@ class vtkLucentRayCaster final : public lucent::scene::RayCaster {
   }
 
  private:
-  vtkSmartPointer<vtkPolyData> Triangles;
   vtkNew<vtkStaticCellLocator> Locator;
   double Reach = 0;  ///< segment length standing in for an infinite ray: twice the data's diagonal
+  glm::dvec3 Centre{0};
   mutable std::mutex Lock;
 };
 
