@@ -17,6 +17,7 @@
 #include <vtkTriangleFilter.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <lucent/image/display_encode.hpp>
 #include <lucent/optics/dipole.hpp>
 #include <lucent/optics/materials.hpp>
 #include <lucent/reference/dipole_truth.hpp>
@@ -26,11 +27,8 @@
 vtkStandardNewMacro(vtkLucentFilter);
 
 namespace {
-/// x / (1 + x) then the sRGB transfer curve, to a byte.
 unsigned char displayByte(double x) {
-  const double v = x > 0 && std::isfinite(x) ? x / (1 + x) : 0.0;
-  const double s = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1 / 2.4) - 0.055;
-  return static_cast<unsigned char>(std::lround(255 * std::clamp(s, 0.0, 1.0)));
+  return static_cast<unsigned char>(std::lround(255 * lucent::image::displayEncode(x)));
 }
 }  // namespace
 

@@ -1,0 +1,32 @@
+//VTK::System::Dec
+//VTK::Output::Dec
+//LUCENT::Optics
+// Stage 3, per pixel (texture-space-importance-sampling Eq. 10-11):
+//   L(x_o, w_o) = Ft(eta, w_o) / pi * sum_i w_i Rd(|x_i - x_o|).
+in vec3 positionVSOutput;
+in vec3 normalVSOutput;
+uniform sampler2D samplePosition;  // world, w = 1 for a drawn sample
+uniform sampler2D sampleWeight;    // E' / (p N) per channel
+uniform int sampleCount;
+uniform int samplesPerRow;
+uniform float mmPerUnit;
+uniform vec3 cameraPosition;
+uniform float eta;
+uniform LucentDipole dipole;
+void main()
+{
+  vec3 sum = vec3(0.0);
+  for (int i = 0; i < sampleCount; ++i)
+  {
+    ivec2 c = ivec2(i % samplesPerRow, i / samplesPerRow);
+    vec4 xi = texelFetch(samplePosition, c, 0);
+    float r = distance(xi.xyz, positionVSOutput) * mmPerUnit;
+    sum += texelFetch(sampleWeight, c, 0).rgb * lucentDipoleRd(dipole, r);
+  }
+  vec3 n = normalize(normalVSOutput);
+  float cosOut = dot(n, normalize(cameraPosition - positionVSOutput));
+  vec3 radiance = sum * (lucentFresnelTransmittance(abs(cosOut), eta) / kPi);
+  gl_FragData[0] = vec4(radiance, 1.0);
+  gl_FragData[1] = vec4(positionVSOutput, 1.0);
+  gl_FragData[2] = vec4(n, cosOut);
+}

@@ -1,0 +1,543 @@
+#include "vtkLucentPass.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <vtkActor.h>
+#include <vtkLight.h>
+#include <vtkLightCollection.h>
+#include <vtkMatrix3x3.h>
+#include <vtkMatrix4x4.h>
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLCamera.h>
+#include <vtkOpenGLError.h>
+#include <vtkOpenGLFramebufferObject.h>
+#include <vtkOpenGLQuadHelper.h>
+#include <vtkOpenGLRenderUtilities.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkOpenGLShaderCache.h>
+#include <vtkOpenGLState.h>
+#include <vtkPropCollection.h>
+#include <vtkRenderState.h>
+#include <vtkRenderer.h>
+#include <vtkShaderProgram.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextureObject.h>
+#include <vtk_glew.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <lucent/optics/dipole.hpp>
+#include <lucent/optics/materials.hpp>
+
+#include "lucent_glsl.h"
+#include "vtkLucentSurface.h"
+
+vtkStandardNewMacro(vtkLucentPass);
+
+namespace {
+/// The shared GLSL pasted where a stage asks for it (shaders/README.md).
+std::string withSharedGlsl(const char* stage) {
+  std::string source = stage;
+  vtkShaderProgram::Substitute(source, "//LUCENT::Optics",
+                               std::string(lucent::glsl::kConstants) + lucent::glsl::kOpticsGlsl);
+  vtkShaderProgram::Substitute(source, "//LUCENT::Display", lucent::glsl::kDisplayGlsl);
+  return source;
+}
+
+vtkSmartPointer<vtkTextureObject> newColorTexture(vtkOpenGLRenderWindow* window, int width, int height) {
+  auto t = vtkSmartPointer<vtkTextureObject>::New();
+  t->SetContext(window);
+  t->SetMinificationFilter(vtkTextureObject::Nearest);
+  t->SetMagnificationFilter(vtkTextureObject::Nearest);
+  t->SetWrapS(vtkTextureObject::ClampToEdge);
+  t->SetWrapT(vtkTextureObject::ClampToEdge);
+  t->Allocate2D(unsigned(width), unsigned(height), 4, VTK_FLOAT);
+  return t;
+}
+
+vtkSmartPointer<vtkTextureObject> newDepthTexture(vtkOpenGLRenderWindow* window, int width, int height) {
+  auto t = vtkSmartPointer<vtkTextureObject>::New();
+  t->SetContext(window);
+  t->SetMinificationFilter(vtkTextureObject::Nearest);
+  t->SetMagnificationFilter(vtkTextureObject::Nearest);
+  t->SetWrapS(vtkTextureObject::ClampToEdge);
+  t->SetWrapT(vtkTextureObject::ClampToEdge);
+  t->AllocateDepth(unsigned(width), unsigned(height), vtkTextureObject::Float32);
+  return t;
+}
+
+vtkSmartPointer<vtkOpenGLFramebufferObject> newFramebuffer(vtkOpenGLRenderWindow* window) {
+  auto f = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+  f->SetContext(window);
+  return f;
+}
+
+int powerOfTwoAtLeast(int n) {
+  int p = 1;
+  while (p < n) p *= 2;
+  return p;
+}
+
+/// Binds @p fbo with its attachments for drawing, viewport 0,0,w,h (not the renderer's tile origin:
+/// inside our own framebuffers the origin is always 0).
+void beginDrawing(vtkOpenGLState* state, vtkOpenGLFramebufferObject* fbo, int colorCount, int width, int height) {
+  fbo->SaveCurrentBindingsAndBuffers();
+  fbo->Bind();
+  if (colorCount > 0) fbo->ActivateDrawBuffers(unsigned(colorCount));
+  else fbo->DeactivateDrawBuffers();
+  state->vtkglViewport(0, 0, width, height);
+  state->vtkglScissor(0, 0, width, height);
+}
+
+void endDrawing(vtkOpenGLFramebufferObject* fbo) {
+  fbo->UnBind();
+  fbo->RestorePreviousBindingsAndBuffers();
+}
+}  // namespace
+
+struct vtkLucentPass::Internals {
+  // The delegate's image, and the translucent surfaces' radiance / position / normal / depth.
+  vtkSmartPointer<vtkOpenGLFramebufferObject> sceneFbo, translucentFbo, lightFbo, atlasFbo, samplesFbo;
+  vtkSmartPointer<vtkTextureObject> sceneColor, sceneDepth;
+  vtkSmartPointer<vtkTextureObject> translucentRadiance, translucentPosition, translucentNormal, translucentDepth;
+  vtkSmartPointer<vtkTextureObject> lightDepth, powerAtlas, positionAtlas, samplePosition, sampleWeight;
+  vtkOpenGLQuadHelper* samplesQuad = nullptr;
+  vtkOpenGLQuadHelper* compositeQuad = nullptr;
+  std::string lightDepthVs, lightDepthFs, atlasVs, atlasFs, shadeVs, shadeFs;
+  std::map<vtkActor*, vtkSmartPointer<vtkLucentSurface>> surfaces;
+  int frameWidth = 0, frameHeight = 0;
+  std::vector<float> frameRadiance, framePosition, frameNormal;
+
+  Internals()
+      : lightDepthVs(lucent::glsl::kLightDepthVert), lightDepthFs(lucent::glsl::kLightDepthFrag),
+        atlasVs(lucent::glsl::kAtlasIrradianceVert), atlasFs(withSharedGlsl(lucent::glsl::kAtlasIrradianceFrag)),
+        shadeVs(lucent::glsl::kTsisShadeVert), shadeFs(withSharedGlsl(lucent::glsl::kTsisShadeFrag)) {}
+};
+
+vtkLucentPass::vtkLucentPass() : Impl(new Internals) {}
+
+vtkLucentPass::~vtkLucentPass() {
+  if (this->Impl->sceneFbo) vtkErrorMacro("graphics resources should have been released in ReleaseGraphicsResources()");
+  delete this->Impl;
+}
+
+void vtkLucentPass::SetMaterial(const char* name) {
+  const std::string value = name ? name : "";
+  if (value == this->Material) return;
+  this->Material = value;
+  this->Modified();
+}
+
+void vtkLucentPass::PrintSelf(ostream& os, vtkIndent indent) {
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Material: " << this->Material << "\n"
+     << indent << "SizeMm: " << this->SizeMm << "\n"
+     << indent << "SampleCount: " << this->SampleCount << "\n"
+     << indent << "AtlasResolution: " << this->AtlasResolution << "\n"
+     << indent << "ShadowMapResolution: " << this->ShadowMapResolution << "\n"
+     << indent << "LightIrradiance: " << this->LightIrradiance << "\n"
+     << indent << "Exposure: " << this->Exposure << "\n"
+     << indent << "SurfaceWeight: " << this->SurfaceWeight << "\n"
+     << indent << "KeepFrame: " << this->KeepFrame << "\n";
+}
+
+void vtkLucentPass::ReportError(const std::string& message) {
+  if (message == this->LastError) return;  // once, not every frame
+  this->LastError = message;
+  vtkErrorMacro(<< message);
+}
+
+bool vtkLucentPass::InitializeGraphicsResources(vtkOpenGLRenderWindow* window, int width, int height) {
+  Internals& I = *this->Impl;
+  if (!I.sceneFbo) {
+    I.sceneFbo = newFramebuffer(window);
+    I.translucentFbo = newFramebuffer(window);
+    I.lightFbo = newFramebuffer(window);
+    I.atlasFbo = newFramebuffer(window);
+    I.samplesFbo = newFramebuffer(window);
+    I.sceneColor = newColorTexture(window, width, height);
+    I.sceneDepth = newDepthTexture(window, width, height);
+    I.translucentRadiance = newColorTexture(window, width, height);
+    I.translucentPosition = newColorTexture(window, width, height);
+    I.translucentNormal = newColorTexture(window, width, height);
+    I.translucentDepth = newDepthTexture(window, width, height);
+    I.lightDepth = newDepthTexture(window, this->ShadowMapResolution, this->ShadowMapResolution);
+    const int atlas = powerOfTwoAtLeast(this->AtlasResolution);
+    I.powerAtlas = newColorTexture(window, atlas, atlas);
+    I.powerAtlas->SetMinificationFilter(vtkTextureObject::NearestMipmapNearest);
+    I.positionAtlas = newColorTexture(window, atlas, atlas);
+    I.samplePosition = newColorTexture(window, 1, 1);
+    I.sampleWeight = newColorTexture(window, 1, 1);
+  }
+  for (auto* t : {I.sceneColor.Get(), I.sceneDepth.Get(), I.translucentRadiance.Get(), I.translucentPosition.Get(),
+                  I.translucentNormal.Get(), I.translucentDepth.Get()})
+    t->Resize(unsigned(width), unsigned(height));
+  return true;
+}
+
+void vtkLucentPass::RenderDelegateWithDepth(const vtkRenderState* s, int width, int height) {
+  Internals& I = *this->Impl;
+  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow())->GetState();
+  I.sceneFbo->SaveCurrentBindingsAndBuffers();
+  I.sceneFbo->Bind();
+  I.sceneFbo->AddColorAttachment(0, I.sceneColor);
+  I.sceneFbo->ActivateDrawBuffers(1);
+  I.sceneFbo->AddDepthAttachment(I.sceneDepth);
+  I.sceneFbo->StartNonOrtho(width, height);
+  state->vtkglViewport(0, 0, width, height);
+  state->vtkglScissor(0, 0, width, height);
+  this->DelegatePass->Render(s);
+  this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+  endDrawing(I.sceneFbo);
+}
+
+bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width, int height) {
+  Internals& I = *this->Impl;
+  vtkRenderer* renderer = s->GetRenderer();
+  vtkOpenGLState* state = window->GetState();
+
+  // The translucent targets start empty even when nothing is translucent.
+  I.translucentFbo->SaveCurrentBindingsAndBuffers();
+  I.translucentFbo->Bind();
+  I.translucentFbo->AddColorAttachment(0, I.translucentRadiance);
+  I.translucentFbo->AddColorAttachment(1, I.translucentPosition);
+  I.translucentFbo->AddColorAttachment(2, I.translucentNormal);
+  I.translucentFbo->AddDepthAttachment(I.translucentDepth);
+  I.translucentFbo->ActivateDrawBuffers(3);
+  state->vtkglViewport(0, 0, width, height);
+  state->vtkglScissor(0, 0, width, height);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglClearColor(0, 0, 0, 0);
+  state->vtkglClearDepth(1.0);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  endDrawing(I.translucentFbo);
+
+  const auto material = lucent::optics::findMaterial(this->Material);
+  if (!material) {
+    std::string names;
+    for (const auto& e : lucent::optics::kMeasuredMaterials) names += (names.empty() ? "" : ", ") + std::string(e.name);
+    this->ReportError("vtkLucentPass: material '" + this->Material + "' is not a measured material; use one of: " + names);
+    return false;
+  }
+  vtkLight* light = nullptr;
+  vtkLightCollection* lights = renderer->GetLights();
+  lights->InitTraversal();
+  for (vtkLight* l = lights->GetNextItem(); l; l = lights->GetNextItem())
+    if (l->GetSwitch()) {
+      light = l;
+      break;
+    }
+  if (!light) {
+    this->ReportError("vtkLucentPass: the renderer has no light switched on; nothing is lit, so nothing glows");
+    return false;
+  }
+  double position[3], focal[3], colour[3];
+  light->GetTransformedPosition(position);
+  light->GetTransformedFocalPoint(focal);
+  light->GetDiffuseColor(colour);
+  glm::dvec3 towardLight(position[0] - focal[0], position[1] - focal[1], position[2] - focal[2]);
+  if (!(glm::length(towardLight) > 0)) {
+    this->ReportError("vtkLucentPass: the light's position equals its focal point; give it a direction");
+    return false;
+  }
+  towardLight = glm::normalize(towardLight);
+  const double scale = this->LightIrradiance * light->GetIntensity();
+  const float irradiance[3] = {float(scale * colour[0]), float(scale * colour[1]), float(scale * colour[2])};
+
+  const auto dipole = lucent::optics::Dipole<double>::make(material->sigmaA, material->sigmaSPrime, material->eta);
+  float sigmaTr[3], zr[3], zv[3], alphaPrime[3];
+  for (int c = 0; c < 3; ++c) {
+    sigmaTr[c] = float(dipole.channel[c].sigmaTr);
+    zr[c] = float(dipole.channel[c].zr);
+    zv[c] = float(dipole.channel[c].zv);
+    alphaPrime[c] = float(dipole.channel[c].alphaPrime);
+  }
+
+  const int atlasSize = powerOfTwoAtLeast(this->AtlasResolution);
+  const int topLevel = int(std::lround(std::log2(double(atlasSize))));
+  I.powerAtlas->SetMaxLevel(topLevel);  // vtkTextureObject's default keeps level 0 only
+  if (int(I.powerAtlas->GetWidth()) != atlasSize) {
+    I.powerAtlas->Resize(unsigned(atlasSize), unsigned(atlasSize));
+    I.positionAtlas->Resize(unsigned(atlasSize), unsigned(atlasSize));
+  }
+  const int shadowSize = this->ShadowMapResolution;
+  if (int(I.lightDepth->GetWidth()) != shadowSize) I.lightDepth->Resize(unsigned(shadowSize), unsigned(shadowSize));
+  const int samplesPerRow = int(std::ceil(std::sqrt(double(this->SampleCount))));
+  I.samplePosition->Resize(unsigned(samplesPerRow), unsigned(samplesPerRow));
+  I.sampleWeight->Resize(unsigned(samplesPerRow), unsigned(samplesPerRow));
+
+  vtkMatrix4x4 *worldToView, *viewToClip, *worldToClip;
+  vtkMatrix3x3* normalMatrix;
+  static_cast<vtkOpenGLCamera*>(renderer->GetActiveCamera())->GetKeyMatrices(renderer, worldToView, normalMatrix,
+                                                                              viewToClip, worldToClip);
+  double cameraPosition[3];
+  renderer->GetActiveCamera()->GetPosition(cameraPosition);
+
+  std::map<vtkActor*, vtkSmartPointer<vtkLucentSurface>> seen;
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  for (vtkProp* prop = props->GetNextProp(it); prop; prop = props->GetNextProp(it)) {
+    auto* actor = vtkActor::SafeDownCast(prop);
+    if (!actor || !actor->GetVisibility() || !actor->GetMapper() || actor->HasTranslucentPolygonalGeometry()) continue;
+    auto found = I.surfaces.find(actor);
+    vtkSmartPointer<vtkLucentSurface> surface =
+        found != I.surfaces.end() ? found->second : vtkSmartPointer<vtkLucentSurface>::New();
+    seen[actor] = surface;
+    std::string error;
+    if (!surface->Update(actor, this->SizeMm, atlasSize, window, error)) continue;  // lines, points: not ours
+    ++this->TranslucentActorCount;
+
+    // Stage 0: depth from the light, orthographic over the object's bounding sphere.
+    const glm::dvec3 centre(surface->GetCentre()[0], surface->GetCentre()[1], surface->GetCentre()[2]);
+    const double radius = surface->GetRadius();
+    const glm::dvec3 up = std::abs(towardLight.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+    const glm::mat4 worldToLight = glm::mat4(glm::ortho(-radius, radius, -radius, radius, 0.5 * radius, 3.5 * radius) *
+                                             glm::lookAt(centre + 2.0 * radius * towardLight, centre, up));
+    glm::mat4 lightMatrix = worldToLight;
+    I.lightFbo->SaveCurrentBindingsAndBuffers();
+    I.lightFbo->Bind();
+    I.lightFbo->AddDepthAttachment(I.lightDepth);
+    I.lightFbo->DeactivateDrawBuffers();
+    state->vtkglViewport(0, 0, shadowSize, shadowSize);
+    state->vtkglScissor(0, 0, shadowSize, shadowSize);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthFunc(GL_LESS);
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+    vtkShaderProgram* depthProgram =
+        window->GetShaderCache()->ReadyShaderProgram(I.lightDepthVs.c_str(), I.lightDepthFs.c_str(), "");
+    if (!depthProgram) {
+      endDrawing(I.lightFbo);
+      this->ReportError("vtkLucentPass: the light-depth shader did not compile");
+      return false;
+    }
+    depthProgram->SetUniformMatrix4x4("worldToLight", glm::value_ptr(lightMatrix));
+    surface->Draw(depthProgram, vtkLucentSurface::LightDepth);
+    endDrawing(I.lightFbo);
+
+    // Stage 1: E' into the atlas (Eq. 4-7), and the position map.
+    I.atlasFbo->SaveCurrentBindingsAndBuffers();
+    I.atlasFbo->Bind();
+    I.atlasFbo->AddColorAttachment(0, I.powerAtlas);
+    I.atlasFbo->AddColorAttachment(1, I.positionAtlas);
+    I.atlasFbo->ActivateDrawBuffers(2);
+    state->vtkglViewport(0, 0, atlasSize, atlasSize);
+    state->vtkglScissor(0, 0, atlasSize, atlasSize);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglClearColor(0, 0, 0, 0);
+    state->vtkglClear(GL_COLOR_BUFFER_BIT);
+    vtkShaderProgram* atlasProgram = window->GetShaderCache()->ReadyShaderProgram(I.atlasVs.c_str(), I.atlasFs.c_str(), "");
+    if (!atlasProgram) {
+      endDrawing(I.atlasFbo);
+      this->ReportError("vtkLucentPass: the atlas shader did not compile");
+      return false;
+    }
+    I.lightDepth->Activate();
+    atlasProgram->SetUniformi("lightDepth", I.lightDepth->GetTextureUnit());
+    atlasProgram->SetUniformMatrix4x4("worldToLight", glm::value_ptr(lightMatrix));
+    const float toward[3] = {float(towardLight.x), float(towardLight.y), float(towardLight.z)};
+    atlasProgram->SetUniform3f("towardLight", toward);
+    atlasProgram->SetUniform3f("lightIrradiance", irradiance);
+    atlasProgram->SetUniformf("eta", float(material->eta));
+    atlasProgram->SetUniformf("shadowBias", 1.0f / float(shadowSize));
+    surface->Draw(atlasProgram, vtkLucentSurface::Atlas);
+    I.lightDepth->Deactivate();
+    endDrawing(I.atlasFbo);
+    // The mip chain of E' is the pyramid of Fig. 2b.
+    I.powerAtlas->Activate();
+    glGenerateMipmap(GL_TEXTURE_2D);
+    I.powerAtlas->Deactivate();
+
+    // Stage 2: N samples by hierarchical warping.
+    if (!I.samplesQuad) {
+      I.samplesQuad = new vtkOpenGLQuadHelper(window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
+                                              lucent::glsl::kMipIcdfSamplesFrag, "");
+    } else {
+      window->GetShaderCache()->ReadyShaderProgram(I.samplesQuad->Program);
+    }
+    if (!I.samplesQuad->Program || !I.samplesQuad->Program->GetCompiled()) {
+      this->ReportError("vtkLucentPass: the sampling shader did not compile");
+      return false;
+    }
+    beginDrawing(state, I.samplesFbo, 0, samplesPerRow, samplesPerRow);
+    I.samplesFbo->AddColorAttachment(0, I.samplePosition);
+    I.samplesFbo->AddColorAttachment(1, I.sampleWeight);
+    I.samplesFbo->ActivateDrawBuffers(2);
+    I.powerAtlas->Activate();
+    I.positionAtlas->Activate();
+    vtkShaderProgram* samplesProgram = I.samplesQuad->Program;
+    samplesProgram->SetUniformi("powerAtlas", I.powerAtlas->GetTextureUnit());
+    samplesProgram->SetUniformi("positionAtlas", I.positionAtlas->GetTextureUnit());
+    samplesProgram->SetUniformi("topLevel", topLevel);
+    samplesProgram->SetUniformi("sampleCount", this->SampleCount);
+    samplesProgram->SetUniformi("samplesPerRow", samplesPerRow);
+    const float rotation[2] = {0.5f / float(this->SampleCount), 0.0f};
+    samplesProgram->SetUniform2f("rotation", rotation);
+    I.samplesQuad->Render();
+    I.positionAtlas->Deactivate();
+    I.powerAtlas->Deactivate();
+    endDrawing(I.samplesFbo);
+
+    // Stage 3: per-pixel sum over the samples (Eq. 10-11), depth-tested among translucent actors.
+    I.translucentFbo->SaveCurrentBindingsAndBuffers();
+    I.translucentFbo->Bind();
+    I.translucentFbo->ActivateDrawBuffers(3);
+    state->vtkglViewport(0, 0, width, height);
+    state->vtkglScissor(0, 0, width, height);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthFunc(GL_LESS);
+    state->vtkglDepthMask(GL_TRUE);
+    vtkShaderProgram* shadeProgram = window->GetShaderCache()->ReadyShaderProgram(I.shadeVs.c_str(), I.shadeFs.c_str(), "");
+    if (!shadeProgram) {
+      endDrawing(I.translucentFbo);
+      this->ReportError("vtkLucentPass: the shading shader did not compile");
+      return false;
+    }
+    I.samplePosition->Activate();
+    I.sampleWeight->Activate();
+    shadeProgram->SetUniformi("samplePosition", I.samplePosition->GetTextureUnit());
+    shadeProgram->SetUniformi("sampleWeight", I.sampleWeight->GetTextureUnit());
+    shadeProgram->SetUniformi("sampleCount", this->SampleCount);
+    shadeProgram->SetUniformi("samplesPerRow", samplesPerRow);
+    shadeProgram->SetUniformf("mmPerUnit", float(surface->GetMillimetresPerUnit()));
+    const float camera[3] = {float(cameraPosition[0]), float(cameraPosition[1]), float(cameraPosition[2])};
+    shadeProgram->SetUniform3f("cameraPosition", camera);
+    shadeProgram->SetUniformf("eta", float(material->eta));
+    shadeProgram->SetUniform3f("dipole.sigmaTr", sigmaTr);
+    shadeProgram->SetUniform3f("dipole.zr", zr);
+    shadeProgram->SetUniform3f("dipole.zv", zv);
+    shadeProgram->SetUniform3f("dipole.alphaPrime", alphaPrime);
+    shadeProgram->SetUniformMatrix("worldToClip", worldToClip);
+    surface->Draw(shadeProgram, vtkLucentSurface::Shade);
+    I.sampleWeight->Deactivate();
+    I.samplePosition->Deactivate();
+    endDrawing(I.translucentFbo);
+  }
+  // Actors gone from the renderer give their buffers back.
+  for (auto& [actor, surface] : I.surfaces)
+    if (!seen.count(actor)) surface->ReleaseGraphicsResources(window);
+  I.surfaces = std::move(seen);
+  return this->TranslucentActorCount > 0;
+}
+
+void vtkLucentPass::Composite(vtkOpenGLRenderWindow* window) {
+  Internals& I = *this->Impl;
+  vtkOpenGLState* state = window->GetState();
+  if (!I.compositeQuad) {
+    const std::string fs = withSharedGlsl(lucent::glsl::kCompositeFrag);
+    I.compositeQuad = new vtkOpenGLQuadHelper(window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
+                                              fs.c_str(), "");
+  } else {
+    window->GetShaderCache()->ReadyShaderProgram(I.compositeQuad->Program);
+  }
+  if (!I.compositeQuad->Program || !I.compositeQuad->Program->GetCompiled()) {
+    this->ReportError("vtkLucentPass: the composite shader did not compile");
+    return;
+  }
+  vtkShaderProgram* program = I.compositeQuad->Program;
+  I.sceneColor->Activate();
+  I.sceneDepth->Activate();
+  I.translucentRadiance->Activate();
+  I.translucentDepth->Activate();
+  program->SetUniformi("sceneColor", I.sceneColor->GetTextureUnit());
+  program->SetUniformi("sceneDepth", I.sceneDepth->GetTextureUnit());
+  program->SetUniformi("translucentRadiance", I.translucentRadiance->GetTextureUnit());
+  program->SetUniformi("translucentDepth", I.translucentDepth->GetTextureUnit());
+  program->SetUniformf("exposure", float(this->Exposure));
+  program->SetUniformf("surfaceWeight", float(this->SurfaceWeight));
+  program->SetUniformf("depthTolerance", 1e-4f);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_ALWAYS);
+  state->vtkglDepthMask(GL_TRUE);
+  I.compositeQuad->Render();
+  state->vtkglDepthFunc(GL_LEQUAL);
+  I.translucentDepth->Deactivate();
+  I.translucentRadiance->Deactivate();
+  I.sceneDepth->Deactivate();
+  I.sceneColor->Deactivate();
+}
+
+void vtkLucentPass::ReadBackFrame(int width, int height) {
+  Internals& I = *this->Impl;
+  I.frameWidth = width;
+  I.frameHeight = height;
+  std::vector<float>* targets[3] = {&I.frameRadiance, &I.framePosition, &I.frameNormal};
+  I.translucentFbo->SaveCurrentBindingsAndBuffers();
+  I.translucentFbo->Bind(GL_READ_FRAMEBUFFER);
+  for (unsigned k = 0; k < 3; ++k) {
+    targets[k]->assign(std::size_t(width) * std::size_t(height) * 4, 0.0f);
+    I.translucentFbo->ActivateReadBuffer(k);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, targets[k]->data());
+  }
+  I.translucentFbo->UnBind(GL_READ_FRAMEBUFFER);
+  I.translucentFbo->RestorePreviousBindingsAndBuffers();
+}
+
+bool vtkLucentPass::GetLastFrame(int& width, int& height, std::vector<float>& radiance, std::vector<float>& position,
+                                 std::vector<float>& normal) const {
+  const Internals& I = *this->Impl;
+  if (I.frameRadiance.empty()) return false;
+  width = I.frameWidth;
+  height = I.frameHeight;
+  radiance = I.frameRadiance;
+  position = I.framePosition;
+  normal = I.frameNormal;
+  return true;
+}
+
+void vtkLucentPass::Render(const vtkRenderState* s) {
+  vtkOpenGLClearErrorMacro();
+  this->NumberOfRenderedProps = 0;
+  this->TranslucentActorCount = 0;
+  vtkRenderer* renderer = s->GetRenderer();
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  if (!this->DelegatePass) {
+    vtkWarningMacro("no delegate in vtkLucentPass: set one, e.g. a vtkRenderStepsPass");
+    return;
+  }
+  int x, y, width, height;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  if (!this->InitializeGraphicsResources(window, width, height)) return;
+
+  state->vtkglDisable(GL_BLEND);  // full-screen and atlas passes must not blend
+  this->RenderDelegateWithDepth(s, width, height);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglDisable(GL_CULL_FACE);
+  if (this->ShadeActors(s, window, width, height)) this->LastError.clear();
+  state->vtkglViewport(x, y, width, height);
+  state->vtkglScissor(x, y, width, height);
+  this->Composite(window);
+  if (this->KeepFrame) this->ReadBackFrame(width, height);
+  vtkOpenGLCheckErrorMacro("failed after Render");
+}
+
+void vtkLucentPass::ReleaseGraphicsResources(vtkWindow* w) {
+  this->Superclass::ReleaseGraphicsResources(w);
+  Internals& I = *this->Impl;
+  delete I.samplesQuad;
+  I.samplesQuad = nullptr;
+  delete I.compositeQuad;
+  I.compositeQuad = nullptr;
+  for (auto& entry : I.surfaces) entry.second->ReleaseGraphicsResources(w);
+  I.surfaces.clear();
+  for (auto* fbo : {I.sceneFbo.Get(), I.translucentFbo.Get(), I.lightFbo.Get(), I.atlasFbo.Get(), I.samplesFbo.Get()})
+    if (fbo) fbo->ReleaseGraphicsResources(w);
+  for (auto* t : {I.sceneColor.Get(), I.sceneDepth.Get(), I.translucentRadiance.Get(), I.translucentPosition.Get(),
+                  I.translucentNormal.Get(), I.translucentDepth.Get(), I.lightDepth.Get(), I.powerAtlas.Get(),
+                  I.positionAtlas.Get(), I.samplePosition.Get(), I.sampleWeight.Get()})
+    if (t) t->ReleaseGraphicsResources(w);
+  I.sceneFbo = I.translucentFbo = I.lightFbo = I.atlasFbo = I.samplesFbo = nullptr;
+  I.sceneColor = I.sceneDepth = I.translucentRadiance = I.translucentPosition = I.translucentNormal = nullptr;
+  I.translucentDepth = I.lightDepth = I.powerAtlas = I.positionAtlas = I.samplePosition = I.sampleWeight = nullptr;
+}

@@ -1,0 +1,135 @@
+/// @file vtkLucentPass.h
+/// @brief Translucent (subsurface-scattering) rendering on the GPU: texture-space importance sampling
+/// (Mertens et al.'s TSIS, texture-space-importance-sampling Sec. 3) as a vtkImageProcessingPass.
+///
+/// Every visible, opaque vtkActor with polygons in the renderer is shaded as one homogeneous translucent
+/// object (light does not cross from one actor to another). Per frame and per actor:
+///  0. depth of the object from the light (shadows);
+///  1. irradiance E' = E A_S / A_T rendered into the object's texture atlas, with the position map (Eq. 4-7);
+///  2. N texels drawn in proportion to E' by descending the atlas's mip chain (Sec. 3.2, Fig. 2b);
+///  3. every pixel sums Rd(|x_i - x_o|) w_i over the N samples, L = Ft B / pi (Eq. 10-11);
+///  4. the translucent radiance replaces the delegate's shading where the object is visible.
+/// The light is the renderer's first switched-on light, taken as directional (from its position towards
+/// its focal point). GLSL: shaders/ (constants generated from lucent/optics/constants.hpp). Built on a
+/// GL 3.2 core context; checked on Mesa llvmpipe.
+///
+/// Usage, as with VTK's own passes:
+/// @code
+///   vtkNew<vtkLucentPass> lucent;  lucent->SetDelegatePass(cameraPass);  renderer->SetPass(lucent);
+/// @endcode
+/// or, without a pass chain, lucent->SetDelegatePass(vtkNew<vtkRenderStepsPass>()).
+#ifndef vtkLucentPass_h
+#define vtkLucentPass_h
+
+#include <string>
+#include <vector>
+
+#include "LucentRenderingModule.h"
+#include <vtkImageProcessingPass.h>
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+
+class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
+ public:
+  static vtkLucentPass* New();
+  vtkTypeMacro(vtkLucentPass, vtkImageProcessingPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  ///@{
+  /// Measured material by name (`lucent materials` lists them). Default skin1. An unknown name is
+  /// reported once and renders nothing translucent.
+  void SetMaterial(const char* name);
+  const char* GetMaterial() const { return this->Material.c_str(); }
+  ///@}
+
+  ///@{
+  /// Object size: 0 = world units are mm; > 0 = each actor is scaled so its bounding-box diagonal is this.
+  vtkSetClampMacro(SizeMm, double, 0.0, 1.0e9);
+  vtkGetMacro(SizeMm, double);
+  ///@}
+
+  ///@{
+  /// N of Eq. 9-11, the importance samples every pixel sums (the accuracy / time knob).
+  vtkSetClampMacro(SampleCount, int, 1, 65536);
+  vtkGetMacro(SampleCount, int);
+  ///@}
+
+  ///@{
+  /// Texels per side of the atlas (rounded up to a power of two for the mip pyramid) and of the light's
+  /// depth map.
+  vtkSetClampMacro(AtlasResolution, int, 16, 4096);
+  vtkGetMacro(AtlasResolution, int);
+  vtkSetClampMacro(ShadowMapResolution, int, 16, 8192);
+  vtkGetMacro(ShadowMapResolution, int);
+  ///@}
+
+  ///@{
+  /// Irradiance of the light on a surface facing it, times the light's intensity and colour.
+  vtkSetClampMacro(LightIrradiance, double, 0.0, 1.0e12);
+  vtkGetMacro(LightIrradiance, double);
+  ///@}
+
+  ///@{
+  /// Display: radiance times Exposure, then x / (1 + x) and sRGB; SurfaceWeight of the delegate's own
+  /// shading of the object is kept on top (0 = subsurface only).
+  vtkSetClampMacro(Exposure, double, 0.0, 1.0e12);
+  vtkGetMacro(Exposure, double);
+  vtkSetClampMacro(SurfaceWeight, double, 0.0, 1.0);
+  vtkGetMacro(SurfaceWeight, double);
+  ///@}
+
+  ///@{
+  /// Keep the last frame's per-pixel translucent radiance, world position and normal for GetLastFrame
+  /// (tests and sweeps read them back; costs a read-back per frame).
+  vtkSetMacro(KeepFrame, bool);
+  vtkGetMacro(KeepFrame, bool);
+  vtkBooleanMacro(KeepFrame, bool);
+  ///@}
+
+  /// The frame kept by KeepFrame: width * height RGBA floats each. radiance.a = 1 where a translucent
+  /// surface is drawn; normal.a = the cosine to the camera. False when nothing was kept.
+  bool GetLastFrame(int& width, int& height, std::vector<float>& radiance, std::vector<float>& position,
+                    std::vector<float>& normal) const;
+
+  /// Actors shaded in the last frame, and the last problem met (empty when none).
+  vtkGetMacro(TranslucentActorCount, int);
+  const char* GetLastError() const { return this->LastError.c_str(); }
+
+ protected:
+  vtkLucentPass();
+  ~vtkLucentPass() override;
+
+ private:
+  vtkLucentPass(const vtkLucentPass&) = delete;
+  void operator=(const vtkLucentPass&) = delete;
+
+  struct Internals;
+  Internals* Impl;
+
+  bool InitializeGraphicsResources(vtkOpenGLRenderWindow* window, int width, int height);
+  void RenderDelegateWithDepth(const vtkRenderState* s, int width, int height);
+  bool ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width, int height);
+  void Composite(vtkOpenGLRenderWindow* window);
+  void ReadBackFrame(int width, int height);
+  void ReportError(const std::string& message);
+
+  std::string Material = "skin1";
+  double SizeMm = 0.0;
+  int SampleCount = 256;
+  int AtlasResolution = 512;
+  int ShadowMapResolution = 1024;
+  double LightIrradiance = 1.0;
+  double Exposure = 1.0;
+  double SurfaceWeight = 0.25;
+  bool KeepFrame = false;
+  int TranslucentActorCount = 0;
+  std::string LastError;
+};
+
+#endif

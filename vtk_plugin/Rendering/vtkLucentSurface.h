@@ -1,0 +1,68 @@
+/// @file vtkLucentSurface.h
+/// @brief One translucent actor as the GPU path needs it (private to Lucent::Rendering): its triangles
+/// in world coordinates with vertex normals, the texture atlas of texture-space-importance-sampling
+/// Sec. 2.2 (built on the CPU by lucent/atlas/texture_atlas.hpp) and one vertex buffer with, per corner,
+/// position, normal, atlas coordinate and the texel area weight A_S / n_T of Eq. 7.
+/// Rebuilt only when the data, the actor's matrix, the size or the atlas resolution change.
+#ifndef vtkLucentSurface_h
+#define vtkLucentSurface_h
+
+#include <string>
+
+#include <vtkNew.h>
+#include <vtkObject.h>
+#include <vtkSmartPointer.h>
+
+class vtkActor;
+class vtkOpenGLBufferObject;
+class vtkOpenGLRenderWindow;
+class vtkOpenGLVertexArrayObject;
+class vtkShaderProgram;
+class vtkWindow;
+
+class vtkLucentSurface : public vtkObject {
+ public:
+  static vtkLucentSurface* New();
+  vtkTypeMacro(vtkLucentSurface, vtkObject);
+
+  /// Brings the CPU and GPU data up to date with the actor; false with @p error when the actor has
+  /// nothing to draw (no polygons) or the atlas cannot be built.
+  bool Update(vtkActor* actor, double sizeMm, int atlasResolution, vtkOpenGLRenderWindow* window, std::string& error);
+
+  /// Draws the triangles with @p program; @p stage picks the vertex array (one per program).
+  enum Stage { LightDepth = 0, Atlas = 1, Shade = 2 };
+  void Draw(vtkShaderProgram* program, Stage stage);
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+  double GetMillimetresPerUnit() const { return this->MillimetresPerUnit; }
+  const double* GetCentre() const { return this->Centre; }
+  double GetRadius() const { return this->Radius; }
+  int GetTriangleCount() const { return this->CornerCount / 3; }
+  int GetAtlasCharts() const { return this->AtlasCharts; }
+  double GetAtlasCoverage() const { return this->AtlasCoverage; }
+
+ protected:
+  vtkLucentSurface();
+  ~vtkLucentSurface() override;
+
+ private:
+  vtkLucentSurface(const vtkLucentSurface&) = delete;
+  void operator=(const vtkLucentSurface&) = delete;
+
+  vtkMTimeType BuiltDataTime = 0;
+  double BuiltMatrix[16] = {};
+  const void* BuiltData = nullptr;
+  double BuiltSizeMm = -1;
+  int BuiltResolution = 0;
+
+  vtkSmartPointer<vtkOpenGLBufferObject> Buffer;
+  vtkSmartPointer<vtkOpenGLVertexArrayObject> Arrays[3];
+  vtkShaderProgram* BoundProgram[3] = {nullptr, nullptr, nullptr};
+  int CornerCount = 0;
+  double MillimetresPerUnit = 1, Centre[3] = {0, 0, 0}, Radius = 1;
+  int AtlasCharts = 0;
+  double AtlasCoverage = 0;
+};
+
+#endif
