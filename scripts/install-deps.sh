@@ -1,26 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages lucent builds against, only those that are missing.
-# Works as root or through sudo; does nothing (and needs no network) when all are present.
+# (libvtk9-dev brings python3-vtk9 back if scripts/paraview-plugin.sh swapped in python3-paraview.)
 set -euo pipefail
-
-packages=(
-  build-essential cmake pkg-config
-  libglm-dev doctest-dev libtbb-dev libeigen3-dev
-  libembree-dev libopenexr-dev libvtk9-dev libtet1.5-dev libopenvdb-dev libboost-iostreams-dev
+exec "$(dirname "$0")/lib/apt-install-missing.sh" \
+  build-essential cmake pkg-config \
+  libglm-dev doctest-dev libtbb-dev libeigen3-dev \
+  libembree-dev libopenexr-dev libvtk9-dev libtet1.5-dev libopenvdb-dev libboost-iostreams-dev \
   xvfb xauth
-)
-
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-[ ${#missing[@]} -eq 0 ] && exit 0
-
-echo "lucent: installing ${missing[*]}" >&2
-if [ "$(id -u)" -eq 0 ]; then sudo=(); elif command -v sudo >/dev/null; then sudo=(sudo); else
-  echo "lucent: missing packages (${missing[*]}) and neither root nor sudo: install them, then rerun" >&2
-  exit 1
-fi
-export DEBIAN_FRONTEND=noninteractive
-"${sudo[@]}" apt-get update -qq
-"${sudo[@]}" apt-get install -y -qq "${missing[@]}" >/dev/null

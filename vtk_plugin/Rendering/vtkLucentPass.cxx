@@ -138,6 +138,8 @@ void vtkLucentPass::PrintSelf(ostream& os, vtkIndent indent) {
      << indent << "SampleCount: " << this->SampleCount << "\n"
      << indent << "AtlasResolution: " << this->AtlasResolution << "\n"
      << indent << "ShadowMapResolution: " << this->ShadowMapResolution << "\n"
+     << indent << "LightDirection: " << this->LightDirection[0] << " " << this->LightDirection[1] << " "
+     << this->LightDirection[2] << "\n"
      << indent << "LightIrradiance: " << this->LightIrradiance << "\n"
      << indent << "Exposure: " << this->Exposure << "\n"
      << indent << "SurfaceWeight: " << this->SurfaceWeight << "\n"
@@ -223,29 +225,34 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
     this->ReportError("vtkLucentPass: material '" + this->Material + "' is not a measured material; use one of: " + names);
     return false;
   }
-  vtkLight* light = nullptr;
-  vtkLightCollection* lights = renderer->GetLights();
-  lights->InitTraversal();
-  for (vtkLight* l = lights->GetNextItem(); l; l = lights->GetNextItem())
-    if (l->GetSwitch()) {
-      light = l;
-      break;
-    }
-  if (!light) {
-    this->ReportError("vtkLucentPass: the renderer has no light switched on; nothing is lit, so nothing glows");
-    return false;
-  }
-  double position[3], focal[3], colour[3];
-  light->GetTransformedPosition(position);
-  light->GetTransformedFocalPoint(focal);
-  light->GetDiffuseColor(colour);
-  glm::dvec3 towardLight(position[0] - focal[0], position[1] - focal[1], position[2] - focal[2]);
+  glm::dvec3 towardLight(this->LightDirection[0], this->LightDirection[1], this->LightDirection[2]);
+  double scale = this->LightIrradiance, colour[3] = {1, 1, 1};
   if (!(glm::length(towardLight) > 0)) {
-    this->ReportError("vtkLucentPass: the light's position equals its focal point; give it a direction");
-    return false;
+    vtkLight* light = nullptr;
+    vtkLightCollection* lights = renderer->GetLights();
+    lights->InitTraversal();
+    for (vtkLight* l = lights->GetNextItem(); l; l = lights->GetNextItem())
+      if (l->GetSwitch()) {
+        light = l;
+        break;
+      }
+    if (!light) {
+      this->ReportError("vtkLucentPass: the renderer has no light switched on and LightDirection is not set; "
+                        "nothing is lit, so nothing glows");
+      return false;
+    }
+    double position[3], focal[3];
+    light->GetTransformedPosition(position);
+    light->GetTransformedFocalPoint(focal);
+    light->GetDiffuseColor(colour);
+    scale *= light->GetIntensity();
+    towardLight = glm::dvec3(position[0] - focal[0], position[1] - focal[1], position[2] - focal[2]);
+    if (!(glm::length(towardLight) > 0)) {
+      this->ReportError("vtkLucentPass: the light's position equals its focal point; give it a direction");
+      return false;
+    }
   }
   towardLight = glm::normalize(towardLight);
-  const double scale = this->LightIrradiance * light->GetIntensity();
   const float irradiance[3] = {float(scale * colour[0]), float(scale * colour[1]), float(scale * colour[2])};
 
   const auto dipole = lucent::optics::Dipole<double>::make(material->sigmaA, material->sigmaSPrime, material->eta);

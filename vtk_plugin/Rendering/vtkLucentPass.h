@@ -9,8 +9,8 @@
 ///  2. N texels drawn in proportion to E' by descending the atlas's mip chain (Sec. 3.2, Fig. 2b);
 ///  3. every pixel sums Rd(|x_i - x_o|) w_i over the N samples, L = Ft B / pi (Eq. 10-11);
 ///  4. the translucent radiance replaces the delegate's shading where the object is visible.
-/// The light is the renderer's first switched-on light, taken as directional (from its position towards
-/// its focal point). GLSL: shaders/ (constants generated from lucent/optics/constants.hpp). Built on a
+/// The light is directional: LightDirection, or else the renderer's first switched-on light (from its
+/// position towards its focal point). GLSL: shaders/ (constants generated from lucent/optics/constants.hpp). Built on a
 /// GL 3.2 core context; checked on Mesa llvmpipe.
 ///
 /// Usage, as with VTK's own passes:
@@ -70,7 +70,14 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   ///@}
 
   ///@{
-  /// Irradiance of the light on a surface facing it, times the light's intensity and colour.
+  /// Direction towards the light in world coordinates; (0, 0, 0), the default, takes the renderer's
+  /// first switched-on light instead (from its position towards its focal point).
+  vtkSetVector3Macro(LightDirection, double);
+  vtkGetVector3Macro(LightDirection, double);
+  ///@}
+
+  ///@{
+  /// Irradiance of the light on a surface facing it (times the scene light's intensity and colour).
   vtkSetClampMacro(LightIrradiance, double, 0.0, 1.0e12);
   vtkGetMacro(LightIrradiance, double);
   ///@}
@@ -124,6 +131,7 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   int SampleCount = 256;
   int AtlasResolution = 512;
   int ShadowMapResolution = 1024;
+  double LightDirection[3] = {0.0, 0.0, 0.0};
   double LightIrradiance = 1.0;
   double Exposure = 1.0;
   double SurfaceWeight = 0.25;

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# apt-install-missing.sh PACKAGE...: installs those of the Debian packages that are not installed yet.
+# Works as root or through sudo; does nothing (and needs no network) when all are present.
+set -euo pipefail
+missing=()
+for p in "$@"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "lucent: installing ${missing[*]}" >&2
+if [ "$(id -u)" -eq 0 ]; then sudo=(); elif command -v sudo >/dev/null; then sudo=(sudo); else
+  echo "lucent: missing packages (${missing[*]}) and neither root nor sudo: install them, then rerun" >&2
+  exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq
+"${sudo[@]}" apt-get install -y -qq "${missing[@]}" >/dev/null

@@ -1,0 +1,120 @@
+"""The lucent plugin in Debian's ParaView 5.11, headless: pvbatch loads it, applies the Lucent Translucent
+filter and the Lucent Render View to built-in sources, saves screenshots and checks them.
+
+    xvfb-run -a pvbatch tests/paraview/test_lucent_plugin.py PLUGIN.so OUTDIR
+Prints 'lucent paraview plugin: OK' and exits 0, or names the failed check and exits 1.
+"""
+import math
+import os
+import sys
+
+from paraview import servermanager
+from paraview.simple import *  # noqa: F401,F403 (ParaView's scripting API)
+from vtkmodules.vtkIOImage import vtkPNGReader
+
+plugin, outdir = sys.argv[1], sys.argv[2]
+os.makedirs(outdir, exist_ok=True)
+LoadPlugin(plugin, remote=False, ns=globals())
+
+
+def fail(message):
+    print("lucent paraview plugin: FAILED: " + message)
+    sys.exit(1)
+
+
+def png_pixels(path):
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    scalars = image.GetPointData().GetScalars()
+    n, c = scalars.GetNumberOfTuples(), scalars.GetNumberOfComponents()
+    return [[scalars.GetComponent(i, k) for k in range(3)] for i in range(n)], c
+
+
+def place_camera(view):
+    view.CameraPosition = [0.0, 0.6, 1.0]
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.ResetCamera(False)
+
+
+# 1. The filter (runs where the data is, on pvserver too): per-vertex Radiosity, finite, lit side bright.
+sphere = Sphere(Radius=0.5, ThetaResolution=64, PhiResolution=32)
+translucent = LucentTranslucent(Input=sphere)
+translucent.Material = "skin1"
+translucent.SizeMm = 20.0
+translucent.LightDirection = [1.0, 0.0, 0.0]
+translucent.UpdatePipeline()
+data = servermanager.Fetch(translucent)
+radiosity = data.GetPointData().GetArray("Radiosity")
+if radiosity is None:
+    fail("the filter's output has no Radiosity array")
+lit, unlit = [], []
+for i in range(data.GetNumberOfPoints()):
+    b = radiosity.GetTuple3(i)
+    if not all(math.isfinite(v) and v >= 0 for v in b):
+        fail("Radiosity is not finite and non-negative at point %d: %s" % (i, b))
+    x = data.GetPoint(i)[0]
+    (lit if x > 0.4 else unlit if x < -0.4 else []).append(b[0])
+if not (lit and unlit and min(lit) > 10 * max(unlit)):
+    fail("the lit side (+x) is not far brighter than the far side")
+view = CreateView("RenderView")
+view.ViewSize = [512, 512]
+view.OrientationAxesVisibility = 0
+view.UseColorPaletteForBackground = 0
+view.Background = [0.05, 0.05, 0.07]
+shape = Superquadric(Toroidal=1, Thickness=0.35, ThetaResolution=96, PhiResolution=48)
+glow = LucentTranslucent(Input=shape)
+glow.SizeMm = 30.0
+glow.LightDirection = [0.0, 0.5, -1.0]
+glow.Exposure = 5.0
+shown = Show(glow, view)
+ColorBy(shown, ("POINTS", "TranslucentColor"))
+shown.MapScalars = 0  # the colours are display values already: show them unlit
+shown.Ambient = 1.0
+shown.Diffuse = 0.0
+place_camera(view)
+Render(view)
+SaveScreenshot(os.path.join(outdir, "paraview-filter.png"), view, ImageResolution=[512, 512])
+
+# 2. The Lucent Render View (the GPU pass inside ParaView's view), back-lit torus.
+lucent_view = CreateView("LucentRenderView")
+lucent_view.ViewSize = [512, 512]
+lucent_view.OrientationAxesVisibility = 0
+lucent_view.UseColorPaletteForBackground = 0
+view.Background = [0.05, 0.05, 0.07]
+lucent_view.LucentMaterial = "skin1"
+lucent_view.LucentSizeMm = 30.0
+lucent_view.LucentLightDirection = [0.0, 0.5, -1.0]  # from behind, as seen by the camera
+lucent_view.LucentExposure = 16.0
+lucent_view.LucentSampleCount = 1024
+surface = Show(shape, lucent_view)
+surface.Diffuse = 0.0  # the pass supplies the diffuse (subsurface) part
+surface.Specular = 0.4
+place_camera(lucent_view)
+Render(lucent_view)
+with_pass = os.path.join(outdir, "paraview-lucent-view.png")
+SaveScreenshot(with_pass, lucent_view, ImageResolution=[512, 512])
+lucent_view.LucentEnabled = 0
+Render(lucent_view)
+without_pass = os.path.join(outdir, "paraview-plain-view.png")
+SaveScreenshot(without_pass, lucent_view, ImageResolution=[512, 512])
+
+a, _ = png_pixels(with_pass)
+b, _ = png_pixels(without_pass)
+background = a[0]
+object_pixels = [i for i in range(len(a)) if max(abs(a[i][k] - background[k]) for k in range(3)) > 8]
+if len(object_pixels) < 5000:
+    fail("the Lucent Render View shows almost nothing (%d object pixels)" % len(object_pixels))
+mean_with = sum(sum(a[i]) for i in object_pixels) / len(object_pixels)
+mean_without = sum(sum(b[i]) for i in object_pixels) / len(object_pixels)
+red = sum(a[i][0] for i in object_pixels) / len(object_pixels)
+blue = sum(a[i][2] for i in object_pixels) / len(object_pixels)
+print("object pixels %d; mean byte sum with the pass %.1f, without %.1f; red %.1f blue %.1f"
+      % (len(object_pixels), mean_with, mean_without, red, blue))
+if not mean_with > 2 * mean_without + 30:
+    fail("the pass does not light the back-lit object")
+if not red > 1.5 * blue:
+    fail("the translucent colour is not skin-like (red should travel furthest)")
+print("lucent paraview plugin: OK")

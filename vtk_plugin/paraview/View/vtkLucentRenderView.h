@@ -1,0 +1,40 @@
+/// @file vtkLucentRenderView.h
+/// @brief ParaView's render view with vtkLucentPass as its image-processing pass: every opaque surface
+/// shown in it is rendered as a translucent material (ParaView's view hosts one vtkImageProcessingPass,
+/// through its synchronized renderer). The Lucent* properties forward to the pass.
+#ifndef vtkLucentRenderView_h
+#define vtkLucentRenderView_h
+
+#include "LucentParaViewViewModule.h"
+#include <vtkPVRenderView.h>
+
+class vtkLucentPass;
+
+class LUCENTPARAVIEWVIEW_EXPORT vtkLucentRenderView : public vtkPVRenderView {
+ public:
+  static vtkLucentRenderView* New();
+  vtkTypeMacro(vtkLucentRenderView, vtkPVRenderView);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Off: the plain render view (the pass is taken out).
+  void SetLucentEnabled(bool enabled);
+  void SetLucentMaterial(const char* name);
+  void SetLucentSizeMm(double mm);
+  void SetLucentSampleCount(int n);
+  void SetLucentAtlasResolution(int texels);
+  void SetLucentLightDirection(double x, double y, double z);
+  void SetLucentLightIrradiance(double e);
+  void SetLucentExposure(double exposure);
+  void SetLucentSurfaceWeight(double weight);
+
+ protected:
+  vtkLucentRenderView();
+  ~vtkLucentRenderView() override;
+
+ private:
+  vtkLucentRenderView(const vtkLucentRenderView&) = delete;
+  void operator=(const vtkLucentRenderView&) = delete;
+  vtkLucentPass* Pass;
+};
+
+#endif
