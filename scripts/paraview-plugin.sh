@@ -9,7 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/lib/apt-install-missing.sh paraview paraview-dev python3-paraview \
   qtbase5-dev libqt5svg5-dev qttools5-dev qtxmlpatterns5-dev-tools libqt5x11extras5-dev libqt5opengl5-dev \
-  xvfb xauth
+  xvfb xauth python3-vtk9- libvtk9-dev-
 [ -f build-paraview/CMakeCache.txt ] ||
   cmake -S . -B build-paraview -DLUCENT_PARAVIEW_PLUGIN=ON -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build-paraview -j"$(nproc)"

@@ -1,10 +1,17 @@
 #!/usr/bin/env bash
-# apt-install-missing.sh PACKAGE...: installs those of the Debian packages that are not installed yet.
-# Works as root or through sudo; does nothing (and needs no network) when all are present.
+# apt-install-missing.sh PACKAGE... [PACKAGE-]...: installs those of the Debian packages that are not
+# installed yet; a name with a trailing '-' is removed in the same apt run if it is installed (apt cannot
+# resolve a Conflicts on its own). Works as root or through sudo; does nothing (and needs no network)
+# when there is nothing to do.
 set -euo pipefail
+installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
 missing=()
 for p in "$@"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  if [[ "$p" == *- ]]; then
+    installed "${p%-}" && missing+=("$p")
+  else
+    installed "$p" || missing+=("$p")
+  fi
 done
 [ ${#missing[@]} -eq 0 ] && exit 0
 

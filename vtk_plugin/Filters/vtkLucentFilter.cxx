@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <vector>
 
 #include <vtkCellArray.h>
@@ -17,6 +19,10 @@
 #include <vtkTriangleFilter.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <lucent/atlas/importance_samples.hpp>
+#include <lucent/atlas/irradiance_atlas.hpp>
+#include <lucent/atlas/texture_atlas.hpp>
+#include <lucent/atlas/tsis_evaluator.hpp>
 #include <lucent/image/display_encode.hpp>
 #include <lucent/optics/dipole.hpp>
 #include <lucent/optics/materials.hpp>
@@ -44,6 +50,9 @@ void vtkLucentFilter::SetMaterial(const char* name) {
 void vtkLucentFilter::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Material: " << this->Material << "\n"
+     << indent << "Technique: " << (this->Technique == TSIS ? "TSIS" : "Reference") << "\n"
+     << indent << "TsisSamples: " << this->TsisSamples << "\n"
+     << indent << "AtlasResolution: " << this->AtlasResolution << "\n"
      << indent << "SizeMm: " << this->SizeMm << "\n"
      << indent << "LightDirection: " << this->LightDirection[0] << " " << this->LightDirection[1] << " "
      << this->LightDirection[2] << "\n"
@@ -115,13 +124,6 @@ int vtkLucentFilter::RequestData(vtkInformation*, vtkInformationVector** inputVe
   const auto dipole = lucent::optics::Dipole<float>::make(lucent::optics::Rgb<float>(material->sigmaA),
                                                           lucent::optics::Rgb<float>(material->sigmaSPrime),
                                                           float(material->eta));
-  const auto spacing = lucent::reference::chooseSpacing(mesh, double(dipole.minMeanFreePath()), this->SampleFraction,
-                                                        std::size_t(this->MaxSamples));
-  if (spacing.budgetLimited)
-    vtkWarningMacro("MaxSamples limits the sample spacing to " << spacing.spacing << " mm (" << this->SampleFraction
-                    << " of the mean free path asked); raise MaxSamples for a converged result");
-  const auto samples = lucent::reference::buildSurfaceSamples(mesh, spacing.spacing);
-  this->SampleCount = vtkIdType(samples.size());
   const glm::dvec3 towardLight =
       glm::dvec3(this->LightDirection[0], this->LightDirection[1], this->LightDirection[2]) / lightLength;
   const std::vector<lucent::scene::Light> lights = {
@@ -129,9 +131,41 @@ int vtkLucentFilter::RequestData(vtkInformation*, vtkInformationVector** inputVe
   lucent::scene::IrradianceSettings irradiance;
   irradiance.eta = material->eta;
   irradiance.rayEpsilon = 1e-5 * mesh.bounds().diagonal();
-  const lucent::reference::DipoleTruth<float> truth(samples, dipole, lights, caster, irradiance,
-                                                    lucent::util::serialFor,
-                                                    [this](double f) { this->UpdateProgress(0.5 * f); });
+  auto stageOne = [this](double f) { this->UpdateProgress(0.5 * f); };
+  std::function<glm::dvec3(const glm::dvec3&)> radiosityAt;
+  std::unique_ptr<lucent::reference::DipoleTruth<float>> truth;
+  std::unique_ptr<lucent::atlas::TsisEvaluator> tsis;
+  if (this->Technique == TSIS) {
+    lucent::atlas::AtlasOptions atlasOptions;
+    atlasOptions.resolution = this->AtlasResolution;
+    lucent::atlas::TextureAtlas atlas;
+    try {
+      atlas = lucent::atlas::buildTextureAtlas(mesh, atlasOptions);
+    } catch (const std::exception& e) {
+      vtkErrorMacro("The texture atlas could not be built (" << e.what() << "); raise AtlasResolution or use the "
+                    "Reference technique");
+      return 0;
+    }
+    const auto irradianceAtlas = lucent::atlas::renderIrradianceAtlas(atlas, mesh, mesh.vertexNormals(), lights, caster,
+                                                                      irradiance, lucent::util::serialFor, stageOne);
+    lucent::atlas::SamplingOptions sampling;
+    sampling.samples = this->TsisSamples;
+    tsis = std::make_unique<lucent::atlas::TsisEvaluator>(lucent::atlas::drawImportanceSamples(irradianceAtlas, sampling),
+                                                          dipole);
+    this->SampleCount = vtkIdType(tsis->samples().size());
+    radiosityAt = [&tsis](const glm::dvec3& p) { return tsis->radiosity(p); };
+  } else {
+    const auto spacing = lucent::reference::chooseSpacing(mesh, double(dipole.minMeanFreePath()), this->SampleFraction,
+                                                          std::size_t(this->MaxSamples));
+    if (spacing.budgetLimited)
+      vtkWarningMacro("MaxSamples limits the sample spacing to " << spacing.spacing << " mm (" << this->SampleFraction
+                      << " of the mean free path asked); raise MaxSamples for a converged result");
+    const auto samples = lucent::reference::buildSurfaceSamples(mesh, spacing.spacing);
+    this->SampleCount = vtkIdType(samples.size());
+    truth = std::make_unique<lucent::reference::DipoleTruth<float>>(samples, dipole, lights, caster, irradiance,
+                                                                    lucent::util::serialFor, stageOne);
+    radiosityAt = [&truth](const glm::dvec3& p) { return truth->radiosity(p); };
+  }
 
   // Stage 2: B at every vertex (Eq. 3), in parallel chunks with progress between them.
   vtkNew<vtkFloatArray> radiosity;
@@ -147,7 +181,7 @@ int vtkLucentFilter::RequestData(vtkInformation*, vtkInformationVector** inputVe
     const vtkIdType end = std::min(pointCount, begin + chunk);
     vtkSMPTools::For(begin, end, [&](vtkIdType first, vtkIdType last) {
       for (vtkIdType i = first; i < last; ++i) {
-        const glm::dvec3 b = truth.radiosity(glm::dvec3(mesh.positions[std::size_t(i)]));
+        const glm::dvec3 b = radiosityAt(glm::dvec3(mesh.positions[std::size_t(i)]));
         for (int c = 0; c < 3; ++c) {
           radiosity->SetTypedComponent(i, c, float(b[c]));
           colour->SetTypedComponent(i, c, displayByte(this->Exposure * b[c]));

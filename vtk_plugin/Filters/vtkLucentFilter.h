@@ -1,7 +1,11 @@
 /// @file vtkLucentFilter.h
 /// @brief Translucent shading of a closed surface on the CPU: per-vertex radiosity B of subsurface
-/// scattering (L = Ft B / pi), from lucent's brute-force dipole sum (texture-space-importance-sampling Eq. 3)
-/// under one directional light with Fresnel-transmitted, shadowed irradiance.
+/// scattering (L = Ft B / pi) under one directional light with Fresnel-transmitted, shadowed irradiance,
+/// by one of two techniques:
+///  - Reference: lucent's brute-force dipole sum over dense surface samples (texture-space-importance-
+///    sampling Eq. 3), the ground truth;
+///  - TSIS: texture-space importance sampling (Sec. 3): irradiance into the chart atlas, N texels drawn by
+///    the mip-map ICDF, B = sum_i w_i Rd(|x_i - x_o|) (Eq. 9-10) at every vertex.
 ///
 /// Output: the input triangulated, with point arrays "Radiosity" (3 floats, irradiance units) and
 /// "TranslucentColor" (3 unsigned chars, Exposure * B tone-mapped x / (1 + x), sRGB-encoded, the active
@@ -42,7 +46,22 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   ///@}
 
   ///@{
-  /// Accuracy knobs of the dipole sum: sample spacing as a fraction of the smallest mean free path, and the
+  /// Technique: Reference (0, default) or TSIS (1).
+  enum Techniques { Reference = 0, TSIS = 1 };
+  vtkSetClampMacro(Technique, int, Reference, TSIS);
+  vtkGetMacro(Technique, int);
+  ///@}
+
+  ///@{
+  /// TSIS knobs: N importance samples (Eq. 9-11) and the atlas's texels per side.
+  vtkSetClampMacro(TsisSamples, int, 1, 10000000);
+  vtkGetMacro(TsisSamples, int);
+  vtkSetClampMacro(AtlasResolution, int, 16, 8192);
+  vtkGetMacro(AtlasResolution, int);
+  ///@}
+
+  ///@{
+  /// Accuracy knobs of the reference's dipole sum: sample spacing as a fraction of the smallest mean free path, and the
   /// sample budget (the spacing is coarsened to respect it, with a warning).
   vtkSetClampMacro(SampleFraction, double, 0.01, 100.0);
   vtkGetMacro(SampleFraction, double);
@@ -56,7 +75,7 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   vtkGetMacro(Exposure, double);
   ///@}
 
-  /// Surface samples and lit samples of the last run (for sweeps and tests).
+  /// Samples of the last run: the reference's surface samples, or TSIS's drawn samples (for sweeps and tests).
   vtkGetMacro(SampleCount, vtkIdType);
 
  protected:
@@ -65,6 +84,9 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   std::string Material = "skin1";
+  int Technique = Reference;
+  int TsisSamples = 4096;
+  int AtlasResolution = 1024;
   double SizeMm = 0.0;
   double LightDirection[3] = {0.0, 0.0, 1.0};
   double LightIrradiance = 1.0;
