@@ -69,9 +69,8 @@ int vtkLucentFilter::RequestData(vtkInformation*, vtkInformationVector** inputVe
 
   const auto material = lucent::optics::findMaterial(this->Material);
   if (!material) {
-    std::string names;
-    for (const auto& e : lucent::optics::kMeasuredMaterials) names += (names.empty() ? "" : ", ") + std::string(e.name);
-    vtkErrorMacro("Material '" << this->Material << "' is not a measured material; use one of: " << names);
+    vtkErrorMacro("Material '" << this->Material << "' is not a measured material; use one of: "
+                  << lucent::optics::measuredMaterialNames());
     return 0;
   }
   const double lightLength = std::sqrt(this->LightDirection[0] * this->LightDirection[0] +

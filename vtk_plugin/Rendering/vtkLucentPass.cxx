@@ -47,24 +47,25 @@ std::string withSharedGlsl(const char* stage) {
   return source;
 }
 
-vtkSmartPointer<vtkTextureObject> newColorTexture(vtkOpenGLRenderWindow* window, int width, int height) {
+/// Every texture of the pass is read texel for texel: nearest filtering, clamped at the edges.
+vtkSmartPointer<vtkTextureObject> newNearestTexture(vtkOpenGLRenderWindow* window) {
   auto t = vtkSmartPointer<vtkTextureObject>::New();
   t->SetContext(window);
   t->SetMinificationFilter(vtkTextureObject::Nearest);
   t->SetMagnificationFilter(vtkTextureObject::Nearest);
   t->SetWrapS(vtkTextureObject::ClampToEdge);
   t->SetWrapT(vtkTextureObject::ClampToEdge);
+  return t;
+}
+
+vtkSmartPointer<vtkTextureObject> newColorTexture(vtkOpenGLRenderWindow* window, int width, int height) {
+  auto t = newNearestTexture(window);
   t->Allocate2D(unsigned(width), unsigned(height), 4, VTK_FLOAT);
   return t;
 }
 
 vtkSmartPointer<vtkTextureObject> newDepthTexture(vtkOpenGLRenderWindow* window, int width, int height) {
-  auto t = vtkSmartPointer<vtkTextureObject>::New();
-  t->SetContext(window);
-  t->SetMinificationFilter(vtkTextureObject::Nearest);
-  t->SetMagnificationFilter(vtkTextureObject::Nearest);
-  t->SetWrapS(vtkTextureObject::ClampToEdge);
-  t->SetWrapT(vtkTextureObject::ClampToEdge);
+  auto t = newNearestTexture(window);
   t->AllocateDepth(unsigned(width), unsigned(height), vtkTextureObject::Float32);
   return t;
 }
@@ -152,7 +153,7 @@ void vtkLucentPass::ReportError(const std::string& message) {
   vtkErrorMacro(<< message);
 }
 
-bool vtkLucentPass::InitializeGraphicsResources(vtkOpenGLRenderWindow* window, int width, int height) {
+void vtkLucentPass::InitializeGraphicsResources(vtkOpenGLRenderWindow* window, int width, int height) {
   Internals& I = *this->Impl;
   if (!I.sceneFbo) {
     I.sceneFbo = newFramebuffer(window);
@@ -177,7 +178,6 @@ bool vtkLucentPass::InitializeGraphicsResources(vtkOpenGLRenderWindow* window, i
   for (auto* t : {I.sceneColor.Get(), I.sceneDepth.Get(), I.translucentRadiance.Get(), I.translucentPosition.Get(),
                   I.translucentNormal.Get(), I.translucentDepth.Get()})
     t->Resize(unsigned(width), unsigned(height));
-  return true;
 }
 
 void vtkLucentPass::RenderDelegateWithDepth(const vtkRenderState* s, int width, int height) {
@@ -220,9 +220,8 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
 
   const auto material = lucent::optics::findMaterial(this->Material);
   if (!material) {
-    std::string names;
-    for (const auto& e : lucent::optics::kMeasuredMaterials) names += (names.empty() ? "" : ", ") + std::string(e.name);
-    this->ReportError("vtkLucentPass: material '" + this->Material + "' is not a measured material; use one of: " + names);
+    this->ReportError("vtkLucentPass: material '" + this->Material + "' is not a measured material; use one of: " +
+                      lucent::optics::measuredMaterialNames());
     return false;
   }
   glm::dvec3 towardLight(this->LightDirection[0], this->LightDirection[1], this->LightDirection[2]);
@@ -296,16 +295,15 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
         found != I.surfaces.end() ? found->second : vtkSmartPointer<vtkLucentSurface>::New();
     seen[actor] = surface;
     std::string error;
-    if (!surface->Update(actor, this->SizeMm, atlasSize, window, error)) continue;  // lines, points: not ours
+    if (!surface->Update(actor, this->SizeMm, atlasSize, error)) continue;  // lines, points: not ours
     ++this->TranslucentActorCount;
 
     // Stage 0: depth from the light, orthographic over the object's bounding sphere.
     const glm::dvec3 centre(surface->GetCentre()[0], surface->GetCentre()[1], surface->GetCentre()[2]);
     const double radius = surface->GetRadius();
     const glm::dvec3 up = std::abs(towardLight.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
-    const glm::mat4 worldToLight = glm::mat4(glm::ortho(-radius, radius, -radius, radius, 0.5 * radius, 3.5 * radius) *
-                                             glm::lookAt(centre + 2.0 * radius * towardLight, centre, up));
-    glm::mat4 lightMatrix = worldToLight;
+    glm::mat4 worldToLight = glm::mat4(glm::ortho(-radius, radius, -radius, radius, 0.5 * radius, 3.5 * radius) *
+                                       glm::lookAt(centre + 2.0 * radius * towardLight, centre, up));
     I.lightFbo->SaveCurrentBindingsAndBuffers();
     I.lightFbo->Bind();
     I.lightFbo->AddDepthAttachment(I.lightDepth);
@@ -323,7 +321,7 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
       this->ReportError("vtkLucentPass: the light-depth shader did not compile");
       return false;
     }
-    depthProgram->SetUniformMatrix4x4("worldToLight", glm::value_ptr(lightMatrix));
+    depthProgram->SetUniformMatrix4x4("worldToLight", glm::value_ptr(worldToLight));
     surface->Draw(depthProgram, vtkLucentSurface::LightDepth);
     endDrawing(I.lightFbo);
 
@@ -346,7 +344,7 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
     }
     I.lightDepth->Activate();
     atlasProgram->SetUniformi("lightDepth", I.lightDepth->GetTextureUnit());
-    atlasProgram->SetUniformMatrix4x4("worldToLight", glm::value_ptr(lightMatrix));
+    atlasProgram->SetUniformMatrix4x4("worldToLight", glm::value_ptr(worldToLight));
     const float toward[3] = {float(towardLight.x), float(towardLight.y), float(towardLight.z)};
     atlasProgram->SetUniform3f("towardLight", toward);
     atlasProgram->SetUniform3f("lightIrradiance", irradiance);
@@ -463,7 +461,6 @@ void vtkLucentPass::Composite(vtkOpenGLRenderWindow* window) {
   state->vtkglDepthFunc(GL_ALWAYS);
   state->vtkglDepthMask(GL_TRUE);
   I.compositeQuad->Render();
-  state->vtkglDepthFunc(GL_LEQUAL);
   I.translucentDepth->Deactivate();
   I.translucentRadiance->Deactivate();
   I.sceneDepth->Deactivate();
@@ -509,13 +506,15 @@ void vtkLucentPass::Render(const vtkRenderState* s) {
   vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);  // the stages set their own; the caller's comes back
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
   if (!this->DelegatePass) {
     vtkWarningMacro("no delegate in vtkLucentPass: set one, e.g. a vtkRenderStepsPass");
     return;
   }
   int x, y, width, height;
   renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
-  if (!this->InitializeGraphicsResources(window, width, height)) return;
+  this->InitializeGraphicsResources(window, width, height);
 
   state->vtkglDisable(GL_BLEND);  // full-screen and atlas passes must not blend
   this->RenderDelegateWithDepth(s, width, height);

@@ -119,7 +119,7 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   struct Internals;
   Internals* Impl;
 
-  bool InitializeGraphicsResources(vtkOpenGLRenderWindow* window, int width, int height);
+  void InitializeGraphicsResources(vtkOpenGLRenderWindow* window, int width, int height);
   void RenderDelegateWithDepth(const vtkRenderState* s, int width, int height);
   bool ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width, int height);
   void Composite(vtkOpenGLRenderWindow* window);

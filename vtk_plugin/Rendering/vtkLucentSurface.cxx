@@ -12,7 +12,6 @@
 #include <vtkMatrix4x4.h>
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLBufferObject.h>
-#include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLVertexArrayObject.h>
 #include <vtkPolyData.h>
 #include <vtkShaderProgram.h>
@@ -65,8 +64,7 @@ void appendTriangles(vtkDataObject* data, vtkMatrix4x4* matrix, lucent::scene::T
 vtkLucentSurface::vtkLucentSurface() = default;
 vtkLucentSurface::~vtkLucentSurface() = default;
 
-bool vtkLucentSurface::Update(vtkActor* actor, double sizeMm, int atlasResolution, vtkOpenGLRenderWindow* window,
-                              std::string& error) {
+bool vtkLucentSurface::Update(vtkActor* actor, double sizeMm, int atlasResolution, std::string& error) {
   vtkMapper* mapper = actor->GetMapper();
   vtkDataObject* data = mapper ? mapper->GetInputDataObject(0, 0) : nullptr;
   if (!data) {
@@ -113,8 +111,6 @@ bool vtkLucentSurface::Update(vtkActor* actor, double sizeMm, int atlasResolutio
     error = std::string("the texture atlas could not be built: ") + e.what();
     return false;
   }
-  this->AtlasCharts = atlas.stats.charts;
-  this->AtlasCoverage = atlas.stats.coverage;
 
   const std::vector<glm::vec3> normals = world.vertexNormals();
   std::vector<float> corners;
@@ -130,7 +126,6 @@ bool vtkLucentSurface::Update(vtkActor* actor, double sizeMm, int atlasResolutio
       corners.insert(corners.end(), {p.x, p.y, p.z, n.x, n.y, n.z, float(uv.x), float(uv.y), float(area)});
     }
   }
-  (void)window;  // the buffer binds to the current context, which Render made current
   if (!this->Buffer) this->Buffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
   this->Buffer->SetType(vtkOpenGLBufferObject::ArrayBuffer);
   if (!this->Buffer->Upload(corners, vtkOpenGLBufferObject::ArrayBuffer)) {

@@ -15,7 +15,6 @@
 
 class vtkActor;
 class vtkOpenGLBufferObject;
-class vtkOpenGLRenderWindow;
 class vtkOpenGLVertexArrayObject;
 class vtkShaderProgram;
 class vtkWindow;
@@ -27,7 +26,8 @@ class vtkLucentSurface : public vtkObject {
 
   /// Brings the CPU and GPU data up to date with the actor; false with @p error when the actor has
   /// nothing to draw (no polygons) or the atlas cannot be built.
-  bool Update(vtkActor* actor, double sizeMm, int atlasResolution, vtkOpenGLRenderWindow* window, std::string& error);
+  /// The vertex buffer binds in the current context (the pass's render window).
+  bool Update(vtkActor* actor, double sizeMm, int atlasResolution, std::string& error);
 
   /// Draws the triangles with @p program; @p stage picks the vertex array (one per program).
   enum Stage { LightDepth = 0, Atlas = 1, Shade = 2 };
@@ -38,9 +38,6 @@ class vtkLucentSurface : public vtkObject {
   double GetMillimetresPerUnit() const { return this->MillimetresPerUnit; }
   const double* GetCentre() const { return this->Centre; }
   double GetRadius() const { return this->Radius; }
-  int GetTriangleCount() const { return this->CornerCount / 3; }
-  int GetAtlasCharts() const { return this->AtlasCharts; }
-  double GetAtlasCoverage() const { return this->AtlasCoverage; }
 
  protected:
   vtkLucentSurface();
@@ -61,8 +58,6 @@ class vtkLucentSurface : public vtkObject {
   vtkShaderProgram* BoundProgram[3] = {nullptr, nullptr, nullptr};
   int CornerCount = 0;
   double MillimetresPerUnit = 1, Centre[3] = {0, 0, 0}, Radius = 1;
-  int AtlasCharts = 0;
-  double AtlasCoverage = 0;
 };
 
 #endif

@@ -111,6 +111,13 @@ inline std::optional<Material> findMaterial(std::string_view name) {
   return std::nullopt;
 }
 
+/// @brief The measured materials' names, comma-separated: what an error about an unknown name lists.
+inline std::string measuredMaterialNames() {
+  std::string names;
+  for (const auto& e : kMeasuredMaterials) names += (names.empty() ? "" : ", ") + std::string(e.name);
+  return names;
+}
+
 /// @brief Why a material cannot be simulated, or an empty string when it can.
 /// Coefficients must be finite and >= 0, some channel must scatter, and eta must lie in the range of the
 /// Fdr fit.
