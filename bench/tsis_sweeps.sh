@@ -41,9 +41,9 @@ done
 echo "== default scene"
 "$lucent" bench --method tsis --sweep samples=400,1600,6400,25600 --sweep atlas=512,1024 "${ref[@]}" "${jb[@]}" \
   --csv "$out/default-tsis.csv" --plot "$out/default-tsis.png" > "$out/default-tsis.txt"
-"$lucent" bench --method hybrid --sweep samples=400,900,3600 --sweep L=10,20 "${ref[@]}" "${jb[@]}" \
+"$lucent" bench --method hybrid --sweep samples=400,900,3600 --sweep rings=10,20 "${ref[@]}" "${jb[@]}" \
   --csv "$out/default-hybrid.csv" --plot "$out/default-hybrid.png" > "$out/default-hybrid.txt"
-"$lucent" bench --method tsm --sweep L=5,10,20,40 --sweep map=256,512,1024 "${ref[@]}" "${jb[@]}" \
+"$lucent" bench --method tsm --sweep rings=5,10,20,40 --sweep map=256,512,1024 "${ref[@]}" "${jb[@]}" \
   --csv "$out/default-tsm.csv" --plot "$out/default-tsm.png" > "$out/default-tsm.txt"
 "$lucent" bench --method tsis --sweep sampler=mip,row --sweep pattern=stratified,independent --knob samples=1600 \
   "${ref[@]}" --csv "$out/default-sampler.csv" > "$out/default-sampler.txt"

@@ -96,7 +96,7 @@ int main(int argc, char** argv) try {
   for (int k = 0; k < 4; ++k) {
     const double a = 2 * optics::kPi * k / 4;
     const glm::dvec3 p = glm::dvec3(std::sin(a), 0.9, -std::cos(a)) * (1.5 * diag);
-    render({scene::PointLight{p, glm::dvec3(glm::dot(p, p))}}, scene.material, {"light " + std::to_string(90 * k) + " deg"});
+    render({scene::PointLight{p, glm::dvec3(glm::dot(p, p))}}, scene.medium.material, {"light " + std::to_string(90 * k) + " deg"});
   }
   // 2. The material changes under the default light.
   for (const char* name : {"skin1", "marble", "ketchup", "skimmilk"})
@@ -111,7 +111,7 @@ int main(int argc, char** argv) try {
     normals = mesh.vertexNormals();
     Row row{"bend " + std::to_string(int(std::lround(curvature * 1000))) + "/m"};
     row.geometry = since(t);
-    render(scene.lights, scene.material, row);
+    render(scene.lights, scene.medium.material, row);
   }
 
   // The picture: one row per kind of change, 4 frames each.

@@ -1,42 +1,79 @@
-/// `lucent render`: renders a scene with one method and writes EXR/PNG images and a JSON stats file.
+/// `lucent render`: renders a scene with one technique of the registry and writes EXR/PNG images and a
+/// JSON stats file.
 #include <cstdio>
 #include <iostream>
 
 #include "../io/atomic_file.hpp"
-#include "../render/methods.hpp"
-#include "../util/error.hpp"
+#include "../technique/techniques.hpp"
 #include "commands.hpp"
 #include "image_output.hpp"
 #include "json_writer.hpp"
 #include "process_stats.hpp"
+#include "technique_run.hpp"
 
 namespace lucent::cli {
 
 namespace {
-std::string methodHelp() {
-  std::string s = "\nmethods and their knobs (--knob NAME=VALUE):\n";
-  for (const auto& m : render::methods()) {
-    s += "  " + m.name + ": " + m.summary + "\n";
-    for (const auto& k : m.knobs) s += "      " + k.name + " (default " + k.defaultValue + "): " + k.help + "\n";
+std::string techniqueHelp(const technique::Registry& registry) {
+  std::string s = "\nmethods and their knobs (--knob NAME=VALUE; `lucent techniques` for ranges and capabilities):\n";
+  for (const auto& t : registry.all()) {
+    s += "  " + t.name + ": " + t.summary + "\n";
+    for (const auto& k : t.knobs)
+      s += "      " + k.name + " (default " + (k.defaultValue.empty() ? "none" : k.defaultValue) + "): " + k.help + "\n";
   }
   return s;
 }
 
+std::string statsJson(const Scene& scene, const technique::Technique& t, const technique::KnobValues& knobs,
+                      const ImageRun& run) {
+  JsonObject knobJson, figures, material;
+  for (const auto& [k, v] : knobs.values()) knobJson.add(k, v);
+  for (const auto& [k, v] : run.figures) figures.add(k, v);
+  const optics::Material& m = scene.medium.material;
+  material.add("name", m.name).add("eta", m.eta);
+  for (int c = 0; c < 3; ++c) {
+    const char* ch[3] = {"r", "g", "b"};
+    material.add(std::string("sigma_a_") + ch[c], m.sigmaA[c]);
+    material.add(std::string("sigma_s_prime_") + ch[c], m.sigmaSPrime[c]);
+  }
+  auto list = [](const std::vector<std::string>& items) {
+    std::string s = "[";
+    for (std::size_t i = 0; i < items.size(); ++i) s += (i ? ", " : "") + JsonObject::quote(items[i]);
+    return s + "]";
+  };
+  JsonObject stats;
+  stats.add("method", t.name)
+      .add("knobs", knobJson)
+      .add("mesh", scene.meshName)
+      .add("triangles", double(scene.mesh.triangles.size()))
+      .add("size_mm", scene.sizeMm)
+      .add("material", material)
+      .raw("lights", list(scene.lightDescriptions))
+      .add("width", double(scene.camera.width))
+      .add("height", double(scene.camera.height))
+      .add("wall_seconds", run.seconds)
+      .add("peak_memory_mib", peakMemoryMiB())
+      .add("sample_unit", run.stats.sampleUnit)
+      .add("figures", figures)
+      .raw("warnings", list(run.stats.warnings));
+  return stats.str() + "\n";
+}
 }  // namespace
 
 int runRender(int argc, char** argv) {
+  const technique::Registry& registry = technique::appRegistry();
   std::vector<OptionSpec> specs = sceneOptionSpecs();
   for (auto& s : toneMapOptionSpecs()) specs.push_back(s);
   specs.push_back({"method", "NAME", "rendering technique (default reference)"});
   specs.push_back({"knob", "NAME=VALUE", "set one of the method's knobs", true});
-  specs.push_back({"spp", "N", "samples per pixel (the knob spp of pathtrace, the Monte Carlo method)"});
+  specs.push_back({"spp", "N", "samples per pixel (the knob spp of techniques that have one)"});
   specs.push_back({"out", "FILE", "output image: .exr (linear radiance, alpha = coverage) or .png (tone-mapped)", true});
   specs.push_back({"stats", "FILE.json", "write wall time, peak memory, sample counts and every knob as JSON"});
   specs.push_back({"quiet", "", "no progress bars"});
   Args args("render", "lucent render [--mesh FILE | --shape NAME] [--material NAME] [--light SPEC]... --out FILE", specs);
   args.parse(argc, argv, 2);
   if (args.helpRequested()) {
-    std::cout << args.helpText() << methodHelp();
+    std::cout << args.helpText() << techniqueHelp(registry);
     return 0;
   }
   if (!args.positional().empty()) args.fail("unexpected argument '" + args.positional().front() + "'");
@@ -44,56 +81,25 @@ int runRender(int argc, char** argv) {
   if (outputs.empty()) args.fail("no output: give --out FILE.exr or --out FILE.png");
   const image::ToneMap toneMap = toneMapFromArgs(args);
   for (const auto& o : outputs)
-    if (!isExr(o) && !isPng(o))
-      args.fail("--out '" + o + "': use a .exr or .png file name");
+    if (!isExr(o) && !isPng(o)) args.fail("--out '" + o + "': use a .exr or .png file name");
 
-  const render::Method& method = render::findMethod(args.get("method", "reference"));
-  std::map<std::string, std::string> given;
-  for (const auto& k : args.all("knob"))
-    for (const auto& [name, value] : render::parseKnobList(k)) given[name] = value;
-  if (args.has("spp")) given["spp"] = args.get("spp", "");
-  const render::Knobs knobs(method.knobs, given, method.name);
+  const technique::Technique& technique = registry.get(args.get("method", "reference"));
+  technique::KnobList given = knobArgs(args, "knob");
+  if (args.has("spp")) given.emplace_back("spp", args.get("spp"));
+  const technique::KnobValues knobs = technique.values(given);
+  // Every output is checked before any work: nothing is written unless everything can be.
+  for (const auto& o : outputs) io::checkWritable(o);
+  if (args.has("stats")) io::checkWritable(args.get("stats"));
+  checkOutputKnobs(knobs);
 
-  const Scene scene = buildScene(args);
-  const bool progress = !args.has("quiet");
-  render::RenderResult result = method.run(scene, knobs, progress);
-  for (const auto& note : result.notes) std::fprintf(stderr, "lucent render: warning: %s\n", note.c_str());
-  for (const auto& o : outputs) writeImage(o, result.image, toneMap);
-
-  if (args.has("stats")) {
-    JsonObject knobJson, figures, material;
-    for (const auto& [k, v] : knobs.values()) knobJson.add(k, v);
-    for (const auto& [k, v] : result.figures) figures.add(k, v);
-    material.add("name", scene.material.name).add("eta", scene.material.eta);
-    for (int c = 0; c < 3; ++c) {
-      const char* ch[3] = {"r", "g", "b"};
-      material.add(std::string("sigma_a_") + ch[c], scene.material.sigmaA[c]);
-      material.add(std::string("sigma_s_prime_") + ch[c], scene.material.sigmaSPrime[c]);
-    }
-    std::string lights = "[";
-    for (std::size_t i = 0; i < scene.lightDescriptions.size(); ++i)
-      lights += (i ? ", " : "") + JsonObject::quote(scene.lightDescriptions[i]);
-    lights += "]";
-    std::string notes = "[";
-    for (std::size_t i = 0; i < result.notes.size(); ++i) notes += (i ? ", " : "") + JsonObject::quote(result.notes[i]);
-    notes += "]";
-    JsonObject stats;
-    stats.add("method", method.name)
-        .add("knobs", knobJson)
-        .add("mesh", scene.meshName)
-        .add("triangles", double(scene.mesh.triangles.size()))
-        .add("size_mm", scene.sizeMm)
-        .add("material", material)
-        .raw("lights", lights)
-        .add("width", double(scene.camera.width))
-        .add("height", double(scene.camera.height))
-        .add("wall_seconds", result.seconds)
-        .add("peak_memory_mib", peakMemoryMiB())
-        .add("figures", figures)
-        .raw("warnings", notes);
-    io::writeTextFile(args.get("stats"), stats.str() + "\n");
-  }
-  std::fprintf(stderr, "lucent render: %s in %.2f s\n", method.name.c_str(), result.seconds);
+  Scene scene = buildScene(args);
+  const ImageRun run = renderImage(registry, technique, scene, knobs, !args.has("quiet"));
+  for (const auto& note : run.stats.warnings) std::fprintf(stderr, "lucent render: warning: %s\n", note.c_str());
+  if (scene.medium.heterogeneous()) std::fprintf(stderr, "lucent render: density: %s\n", scene.medium.densityDescription.c_str());
+  for (const auto& inc : scene.inclusions) std::fprintf(stderr, "lucent render: inclusion: %s\n", inc.description.c_str());
+  for (const auto& o : outputs) writeImage(o, run.image, toneMap);
+  if (args.has("stats")) io::writeTextFile(args.get("stats"), statsJson(scene, technique, knobs, run));
+  std::fprintf(stderr, "lucent render: %s in %.2f s\n", technique.name.c_str(), run.seconds);
   return 0;
 }
 

@@ -6,10 +6,13 @@
 #include "../io/exr_io.hpp"
 #include "../io/mesh_io.hpp"
 #include "../raycast/embree_ray_caster.hpp"
+#include "../render/density_field.hpp"
 #include "../scene/builtin_shapes.hpp"
 #include "../util/error.hpp"
+#include "../util/tbb_parallel.hpp"
 #include "material_options.hpp"
 #include <lucent/scene/mesh_check.hpp>
+#include <lucent/scene/shapes.hpp>
 
 namespace lucent::cli {
 
@@ -65,6 +68,44 @@ scene::Light parseLight(const Args& args, const std::string& text, double diag, 
   }
   args.fail("--light '" + text + "': unknown kind '" + kind + "'; use point:X,Y,Z[:R,G,B], dir:X,Y,Z[:R,G,B] or env:FILE.exr[:SCALE]");
 }
+/// Whether a point lies inside the closed mesh (odd crossings along a fixed direction).
+bool inside(const scene::RayCaster& caster, glm::dvec3 p, double epsilon) {
+  int crossings = 0;
+  const glm::dvec3 dir = glm::normalize(glm::dvec3(1, 0.0123, 0.0321));
+  for (int i = 0; i < 10000; ++i) {
+    const auto hit = caster.intersect(p, dir, epsilon, std::numeric_limits<double>::infinity());
+    if (!hit) break;
+    ++crossings;
+    p += hit->t * dir;
+  }
+  return crossings % 2 == 1;
+}
+
+/// "--inclusion MATERIAL[:FRACTION]": a sphere of another material at the bounding-box centre, its radius
+/// FRACTION (default 0.3) of half the smallest box extent; it must lie inside the object.
+technique::Inclusion parseInclusion(const Args& args, const std::string& text, const Scene& s) {
+  const auto colon = text.find(':');
+  const std::string name = text.substr(0, colon);
+  const auto found = optics::findMaterial(name);
+  if (!found) args.fail("--inclusion " + text + ": '" + name + "' is not a material; `lucent materials` lists them");
+  const double fraction =
+      colon == std::string::npos ? 0.3 : parseNumber(text.substr(colon + 1), "lucent " + args.command() + ": --inclusion");
+  if (!(fraction >= 1e-3 && fraction <= 1)) args.fail("--inclusion " + text + ": the radius fraction must lie in [0.001, 1]");
+  const scene::Bounds bounds = s.mesh.bounds();
+  const glm::dvec3 extent = bounds.hi - bounds.lo, centre = bounds.center();
+  const double radius = fraction * 0.5 * std::min(extent.x, std::min(extent.y, extent.z));
+  technique::Inclusion inc;
+  inc.surface = scene::shapes::sphere(radius, 4, centre);
+  for (const auto& p : inc.surface.positions)
+    if (!inside(*s.caster, glm::dvec3(p), 1e-7 * bounds.diagonal()))
+      args.fail("--inclusion " + text + ": the sphere (radius " + std::to_string(radius) +
+                " mm at the bounding-box centre) is not inside the object; lower the fraction or use a shape that is "
+                "solid at its centre (e.g. --shape sphere)");
+  inc.medium.material = *found;
+  inc.contains = [centre, radius](const glm::dvec3& p) { return glm::length(p - centre) < radius; };
+  inc.description = found->name + " sphere of radius " + std::to_string(radius) + " mm";
+  return inc;
+}
 }  // namespace
 
 std::vector<OptionSpec> sceneOptionSpecs() {
@@ -77,6 +118,10 @@ std::vector<OptionSpec> sceneOptionSpecs() {
       {"width", "W", "image width in pixels (default 400)"},
       {"height", "H", "image height in pixels (default 400)"},
       {"skip-mesh-check", "", "render even if the mesh is not closed and outward-oriented"},
+      {"density", "SPEC", "heterogeneous medium: sigma_a and sigma_s' times a density, noise:F, FILE.vdb[:GRID] or "
+                          "FILE.vti[:ARRAY] (fitted to the bounding box)"},
+      {"inclusion", "MATERIAL[:F]", "a sphere of another material at the bounding-box centre, radius F (default "
+                                    "0.3) of half the smallest extent"},
   };
   for (auto& m : materialOptionSpecs()) specs.push_back(m);
   return specs;
@@ -104,7 +149,7 @@ Scene buildScene(const Args& args) {
   }
   s.mesh.scaleToSize(s.sizeMm);
   s.vertexNormals = s.mesh.vertexNormals();
-  s.material = materialFromArgs(args, kDefaultMaterial);
+  s.medium.material = materialFromArgs(args, kDefaultMaterial);
 
   const double diag = s.mesh.bounds().diagonal();
   for (const std::string& spec : args.all("light")) {
@@ -124,7 +169,18 @@ Scene buildScene(const Args& args) {
   const glm::dvec3 view = args.triple("view", glm::dvec3(0, 0.6, 1));
   if (glm::length(view) <= 0) args.fail("--view must not be the zero vector");
   s.camera = scene::PinholeCamera::frame(s.mesh.bounds(), view, w, h);
-  s.caster = std::make_unique<raycast::EmbreeRayCaster>(s.mesh);
+  s.ownedCaster = std::make_unique<raycast::EmbreeRayCaster>(s.mesh);
+  s.caster = s.ownedCaster.get();
+  s.makeRayCaster = [](const scene::TriangleMesh& m) { return std::make_unique<raycast::EmbreeRayCaster>(m); };
+  s.parallelFor = util::tbbFor;
+
+  if (args.has("density")) {
+    const render::DensityField field = render::parseDensityField("lucent " + args.command() + ": --density",
+                                                                 args.get("density"), s.mesh.bounds());
+    s.medium.density = field.at;
+    s.medium.densityDescription = field.description;
+  }
+  if (args.has("inclusion")) s.inclusions.push_back(parseInclusion(args, args.get("inclusion"), s));
   return s;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 /// @file scene_setup.hpp
-/// @brief The scene options render and bench share (mesh or shape, size, material, lights, camera), and
-/// the built-in default scene: a back-lit skin1 genus-7 ring, whose thin parts glow.
+/// @brief The scene options render and bench share (mesh or shape, size, material, media, lights, camera),
+/// and the built-in default scene: a back-lit skin1 genus-7 ring, whose thin parts glow.
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,21 +11,19 @@
 #include <lucent/scene/light.hpp>
 #include <lucent/scene/mesh.hpp>
 #include <lucent/scene/ray_caster.hpp>
+#include <lucent/technique/scene.hpp>
 
 #include "args.hpp"
 
 namespace lucent::cli {
 
-struct Scene {
-  std::string meshName;
-  scene::TriangleMesh mesh;
-  std::vector<glm::vec3> vertexNormals;
+/// What every technique reads (technique::SceneDescription, with Embree ray casting and TBB loops), plus
+/// what the CLI adds: the camera, the size asked for, and the lights as the user wrote them.
+struct Scene : technique::SceneDescription {
   double sizeMm = 0;
-  optics::Material material;
-  std::vector<scene::Light> lights;
   std::vector<std::string> lightDescriptions;
   scene::PinholeCamera camera;
-  std::unique_ptr<scene::RayCaster> caster;
+  std::unique_ptr<scene::RayCaster> ownedCaster;  ///< `caster` points here
 };
 
 /// The options that describe a scene, for a subcommand's option list.

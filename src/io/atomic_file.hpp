@@ -12,12 +12,18 @@
 
 namespace lucent::io {
 
+/// Throws InputError naming the file when it cannot be written because its folder is missing: front ends
+/// call this for every output before any work, so nothing is written unless everything can be.
+inline void checkWritable(const std::string& path) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty() && !std::filesystem::is_directory(parent))
+    throw InputError("cannot write '" + path + "': folder '" + parent.string() + "' does not exist; create it first");
+}
+
 class AtomicFile {
  public:
   explicit AtomicFile(std::string path) : mPath(std::move(path)) {
-    const std::filesystem::path parent = std::filesystem::path(mPath).parent_path();
-    if (!parent.empty() && !std::filesystem::is_directory(parent))
-      throw InputError("cannot write '" + mPath + "': folder '" + parent.string() + "' does not exist; create it first");
+    checkWritable(mPath);
     mTemp = mPath + ".tmp-" + std::to_string(::getpid());
   }
   ~AtomicFile() {

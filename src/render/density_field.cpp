@@ -30,11 +30,10 @@ bool splitFileSpec(const std::string& spec, const std::string& ext, std::string&
 }
 }  // namespace
 
-DensityField parseDensityField(const std::string& method, const std::string& knob, const std::string& spec,
-                               const scene::Bounds& bounds) {
+DensityField parseDensityField(const std::string& option, const std::string& spec, const scene::Bounds& bounds) {
   DensityField field;
   if (spec.empty()) return field;
-  const std::string what = "method '" + method + "' knob " + knob + "='" + spec + "'";
+  const std::string what = option + " " + spec;
   if (spec.rfind("noise:", 0) == 0) {
     double periods = 0;
     try {

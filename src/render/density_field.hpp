@@ -1,7 +1,7 @@
 #pragma once
 /// @file density_field.hpp
-/// @brief A density knob shared by the methods that take heterogeneous media (pathtrace's `density=`,
-/// quadgraph's `medium=`): a field in [0, 1] that scales sigma_a and sigma_s, fitted to the mesh's box.
+/// @brief The scene's density field (`--density`, read by every technique that takes heterogeneous media):
+/// a field in [0, 1] that scales sigma_a and sigma_s, fitted to the mesh's box.
 #include <functional>
 #include <string>
 
@@ -19,8 +19,7 @@ struct DensityField {
 
 /// "" (homogeneous), "noise:F" (a smooth field in [0.1, 1], F periods across the object), "FILE.vdb[:GRID]"
 /// (OpenVDB) or "FILE.vti[:ARRAY]" (VTK image data). A file's index box is fitted to `bounds` and its values
-/// divided by their maximum. Throws InputError naming `method`'s knob, the problem and the fix.
-DensityField parseDensityField(const std::string& method, const std::string& knob, const std::string& spec,
-                               const scene::Bounds& bounds);
+/// divided by their maximum. Throws InputError naming `option`, the problem and the fix.
+DensityField parseDensityField(const std::string& option, const std::string& spec, const scene::Bounds& bounds);
 
 }  // namespace lucent::render

@@ -122,7 +122,7 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
       {"render --out " + out + " --method tsis --knob samples=0", "samples must be an integer in"},
       {"render --out " + out + " --method tsis --knob eval=face", "eval must be pixel or vertex"},
       {"render --out " + out + " --method hybrid --knob c=0", "c must be > 0"},
-      {"render --out " + out + " --method tsm --knob L=0", "L must be an integer in"},
+      {"render --out " + out + " --method tsm --knob rings=0", "rings must be an integer in"},
   };
   for (const auto& c : cases) {
     const Run r = lucentCli(c.args, dir);
@@ -239,7 +239,7 @@ TEST_CASE("render --method pathtrace: image, standard error, nested inclusion, c
   lucent::test::TempDir dir;
   const std::string stats = dir / "pt.json", se = dir / "se.exr";
   const Run r = lucentCli("render --shape sphere --size-mm 3 --width 24 --height 24 --quiet --method pathtrace --spp 8 "
-                          "--knob inclusion=ketchup --knob density=noise:2 --knob stderr=" + se + " --out " + dir / "pt.exr" +
+                          "--inclusion ketchup --density noise:2 --knob stderr=" + se + " --out " + dir / "pt.exr" +
                               " --stats " + stats,
                           dir);
   INFO(r.err);
@@ -260,13 +260,13 @@ TEST_CASE("render --method pathtrace: image, standard error, nested inclusion, c
     }
   CHECK(covered > 100);
 
-  const Run bad = lucentCli("render --shape torus --quiet --method pathtrace --knob inclusion=marble --knob inclusion-radius=0.9 --out " +
+  const Run bad = lucentCli("render --shape torus --quiet --method pathtrace --inclusion marble:0.9 --out " +
                                 dir / "x.exr",
                             dir);
   CHECK(bad.code == 2);
   CHECK(contains(bad.err, "not inside the object"));
   CHECK_FALSE(std::filesystem::exists(dir / "x.exr"));
-  const Run badDensity = lucentCli("render --shape sphere --quiet --method pathtrace --knob density=fog.vdb --out " + dir / "x.exr", dir);
+  const Run badDensity = lucentCli("render --shape sphere --quiet --method pathtrace --density fog.vdb --out " + dir / "x.exr", dir);
   CHECK(badDensity.code == 2);
   CHECK(contains(badDensity.err, "fog.vdb"));
 }
@@ -332,12 +332,12 @@ void writeHalfDensityVti(const std::string& path, double spacingZ) {
 }
 }  // namespace
 
-TEST_CASE("render --method quadgraph --knob medium=FILE.vti: a scanned volume scales sigma node by node") {
+TEST_CASE("render --method quadgraph --density FILE.vti: a scanned volume scales sigma node by node") {
   lucent::test::TempDir dir;
   const std::string vti = dir / "scan.vti", vtu = dir / "graph.vtu";
   writeHalfDensityVti(vti, 0.5);
   const Run r = lucentCli("render --shape sphere --size-mm 10 --width 32 --height 32 --quiet --method quadgraph "
-                          "--material skin1 --knob levels=1 --knob display=nodes --knob medium=" + vti + ":density" +
+                          "--material skin1 --knob levels=1 --knob display=nodes --density " + vti + ":density" +
                               " --knob vtu=" + vtu + " --out " + dir / "qg.exr",
                           dir);
   INFO(r.err);
@@ -368,12 +368,12 @@ TEST_CASE("render --method quadgraph --knob medium=FILE.vti: a scanned volume sc
   CHECK(thin > 100);
 
   // Bad volumes: a missing array names the ones there are; non-cubic voxels name the fix; nothing written.
-  const Run noArray = lucentCli("render --shape sphere --quiet --method quadgraph --knob medium=" + vti +
+  const Run noArray = lucentCli("render --shape sphere --quiet --method quadgraph --density " + vti +
                                     ":bone --out " + dir / "x.exr", dir);
   CHECK(noArray.code == 2);
   CHECK(contains(noArray.err, "no point-data array 'bone'; the file has: density"));
   writeHalfDensityVti(dir / "stretched.vti", 0.7);
-  const Run stretched = lucentCli("render --shape sphere --quiet --method quadgraph --knob medium=" +
+  const Run stretched = lucentCli("render --shape sphere --quiet --method quadgraph --density " +
                                       dir / "stretched.vti" + " --out " + dir / "x.exr", dir);
   CHECK(stretched.code == 2);
   CHECK(contains(stretched.err, "cubic voxels"));

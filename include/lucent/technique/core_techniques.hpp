@@ -1,0 +1,21 @@
+#pragma once
+/// @file core_techniques.hpp
+/// @brief The header-only techniques (STL + GLM, services through SceneDescription). Adding one is one
+/// file and one line here; techniques that need a heavy library register from their adapter in src/.
+#include "dipole_sum.hpp"
+#include "path_tracing.hpp"
+#include "registry.hpp"
+#include "texture_space.hpp"
+
+namespace lucent::technique {
+
+inline void addCoreTechniques(Registry& registry) {
+  registry.add(referenceTechnique());
+  registry.add(jensenBuhlerTechnique());
+  registry.add(tsisTechnique());
+  registry.add(hybridTechnique());
+  registry.add(tsmTechnique());
+  registry.add(pathtraceTechnique());
+}
+
+}  // namespace lucent::technique

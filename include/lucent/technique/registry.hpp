@@ -1,0 +1,84 @@
+#pragma once
+/// @file registry.hpp
+/// @brief The techniques every front end lists and runs. A technique is added once (core_techniques.hpp
+/// for the header-only ones, an adapter for those that need a heavy library); front ends never name one.
+#include <string>
+#include <vector>
+
+#include "technique.hpp"
+
+namespace lucent::technique {
+
+/// The result of one prepare and one frame.
+struct Rendered {
+  FrameResult frame;
+  Statistics stats;
+  double seconds = 0;  ///< wall time of prepare + frame
+};
+
+class Registry {
+ public:
+  /// Adds a technique; its name must be new, its default knobs valid, and its knob names unique also in
+  /// their CamelCase form (the VTK property names).
+  void add(Technique t) {
+    if (find(t.name)) throw std::logic_error("technique '" + t.name + "' is registered twice");
+    for (std::size_t i = 0; i < t.knobs.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (camelCase(t.knobs[i].name) == camelCase(t.knobs[j].name))
+          throw std::logic_error("technique '" + t.name + "': knobs " + t.knobs[i].name + " and " + t.knobs[j].name +
+                                 " have the same CamelCase name");
+    t.values();  // the defaults must pass their own checks
+    mAll.push_back(std::move(t));
+  }
+  const std::vector<Technique>& all() const { return mAll; }
+  const Technique* find(const std::string& name) const {
+    for (const auto& t : mAll)
+      if (t.name == name) return &t;
+    return nullptr;
+  }
+  /// Throws RequestError listing the techniques when `name` is unknown.
+  const Technique& get(const std::string& name) const {
+    if (const Technique* t = find(name)) return *t;
+    throw RequestError("unknown technique '" + name + "'; available: " + names([](const Technique&) { return true; }));
+  }
+
+  /// Fails before any work when the technique cannot serve the scene and request, naming those that can.
+  void check(const Technique& t, const SceneDescription& scene, const ShadeRequest& request) const {
+    const Requirements needs = requirementsOf(scene, request);
+    const auto missing = unmet(t.capabilities, needs);
+    if (missing.empty()) return;
+    std::string what;
+    for (const auto& m : missing) what += (what.empty() ? "" : ", ") + m;
+    const std::string able = names([&](const Technique& o) { return unmet(o.capabilities, needs).empty(); });
+    throw RequestError("technique '" + t.name + "' cannot take " + what + "; techniques that can: " +
+                       (able.empty() ? "none" : able));
+  }
+
+  /// check, prepare, one frame, radiance completed from radiosity.
+  Rendered render(const Technique& t, const SceneDescription& scene, const KnobValues& knobs,
+                  const ShadeRequest& request) const {
+    check(t, scene, request);
+    Rendered out;
+    const Stopwatch clock;
+    std::unique_ptr<Prepared> prepared = t.prepare(scene, knobs, out.stats);
+    scene.checkCancelled();
+    out.frame = prepared->frame(scene, request, out.stats);
+    completeRadiance(out.frame, request, scene.medium.material.eta);
+    out.seconds = clock.seconds();
+    return out;
+  }
+
+  /// Names of the techniques `keep` accepts, comma-separated.
+  template <class Keep>
+  std::string names(const Keep& keep) const {
+    std::string s;
+    for (const auto& t : mAll)
+      if (keep(t)) s += (s.empty() ? "" : ", ") + t.name;
+    return s;
+  }
+
+ private:
+  std::vector<Technique> mAll;
+};
+
+}  // namespace lucent::technique

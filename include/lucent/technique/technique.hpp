@@ -1,0 +1,93 @@
+#pragma once
+/// @file technique.hpp
+/// @brief One technique, described: name, summary, the paper and equations it implements, typed knobs,
+/// capabilities, the sweep that shows what its accuracy costs, and two phases: prepare(scene, knobs) builds
+/// what survives a change of light or material (samples, atlas, octree, graph); a frame shades the
+/// requested points. L = Ft B / pi is applied here, once, for every technique that computes radiosity B.
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "../optics/fresnel.hpp"
+#include "capabilities.hpp"
+#include "knob.hpp"
+#include "scene.hpp"
+#include "statistics.hpp"
+
+namespace lucent::technique {
+
+/// A frame's output, one value per requested point.
+struct FrameResult {
+  std::vector<glm::dvec3> radiance;   ///< leaving the surface towards the viewer
+  std::vector<glm::dvec3> radiosity;  ///< B (dipole-family techniques); radiance follows from it
+  /// Further per-point values (e.g. "stderr", the path tracer's standard error), each named after the
+  /// OutputFile knob that asks a front end to write it.
+  std::vector<std::pair<std::string, std::vector<glm::dvec3>>> extras;
+};
+
+/// What prepare built; a frame reads it.
+class Prepared {
+ public:
+  virtual ~Prepared() = default;
+  /// Shades the request under the scene's current lights and material; adds its phases to `stats`.
+  virtual FrameResult frame(const SceneDescription& scene, const ShadeRequest& request, Statistics& stats) = 0;
+};
+
+/// Values of one knob for the bench's default sweep.
+struct Sweep {
+  std::string knob;
+  std::vector<std::string> values;
+};
+
+using KnobList = std::vector<std::pair<std::string, std::string>>;
+
+struct Technique {
+  std::string name;     ///< what --method, the registry and (CamelCase) VTK properties call it
+  std::string summary;  ///< one line
+  std::string paper;    ///< the reference and the equations implemented
+  std::vector<KnobSpec> knobs;
+  Capabilities capabilities;
+  std::vector<Sweep> defaultSweep;  ///< what `lucent bench` sweeps when no --sweep is given
+  KnobList referenceKnobs;          ///< the knobs of a converged result, when this technique is the reference
+  std::function<std::unique_ptr<Prepared>(const SceneDescription&, const KnobValues&, Statistics&)> prepare;
+
+  KnobValues values(const KnobList& given = {}) const { return KnobValues(knobs, given, name); }
+  const KnobSpec* knob(const std::string& knobName) const {
+    for (const auto& k : knobs)
+      if (k.name == knobName) return &k;
+    return nullptr;
+  }
+};
+
+/// L(x_o, w_o) = Ft(eta, w_o) B(x_o) / pi (texture-space-importance-sampling Eq. 2; Jensen et al. 2001's
+/// diffuse exitance through the boundary), with the exact dielectric Fresnel term.
+inline glm::dvec3 exitRadiance(const glm::dvec3& radiosity, double cosOut, double eta) {
+  return radiosity * (optics::fresnelTransmittance(cosOut, eta) / optics::kPi);
+}
+
+/// Fills the radiance of a frame that computed only radiosity.
+inline void completeRadiance(FrameResult& frame, const ShadeRequest& request, double eta) {
+  if (!frame.radiance.empty() || frame.radiosity.empty()) return;
+  frame.radiance.resize(frame.radiosity.size());
+  for (std::size_t i = 0; i < frame.radiosity.size(); ++i)
+    frame.radiance[i] = exitRadiance(frame.radiosity[i], request.points[i].cosOut, eta);
+}
+
+/// B at every request point from a radiosity evaluator, in parallel, with progress.
+template <class Radiosity>
+std::vector<glm::dvec3> radiosityAt(const Radiosity& eval, const SceneDescription& scene, const ShadeRequest& request,
+                                    const std::string& stage) {
+  std::vector<glm::dvec3> b(request.points.size());
+  const util::Progress progress = scene.stage(stage);
+  std::atomic<std::size_t> done{0};
+  scene.parallelFor(b.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) b[i] = eval.radiosity(request.points[i].position);
+    if (progress) progress(double(done += end - begin) / double(b.size()));
+  });
+  return b;
+}
+
+}  // namespace lucent::technique

@@ -1,0 +1,19 @@
+#include <lucent/technique/core_techniques.hpp>
+
+#include "techniques.hpp"
+
+namespace lucent::technique {
+
+Registry& appRegistry() {
+  static Registry registry = [] {
+    Registry r;
+    addCoreTechniques(r);
+#ifdef LUCENT_HAVE_TETGEN
+    r.add(quadgraphTechnique());
+#endif
+    return r;
+  }();
+  return registry;
+}
+
+}  // namespace lucent::technique

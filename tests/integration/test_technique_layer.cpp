@@ -1,0 +1,162 @@
+// The technique layer as the front ends meet it: a technique registered by a test alone (no other edit)
+// shows up in `lucent techniques --json`, runs through `render --method` and `bench`, and is refused
+// before any work where its capabilities do not reach; the same check holds for the built-in techniques.
+#include <doctest/doctest.h>
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "cli/commands.hpp"
+#include "io/exr_io.hpp"
+#include "technique/techniques.hpp"
+#include "temp_dir.hpp"
+
+namespace {
+using namespace lucent;
+
+/// Radiance = `level` everywhere: what a front end shows can be checked exactly.
+technique::Technique constantTechnique() {
+  technique::Technique t;
+  t.name = "test-constant";
+  t.summary = "test only: constant radiance";
+  t.paper = "none";
+  t.knobs = {technique::KnobSpec::real("level", "0.5", 0, 1, "", "the radiance returned"),
+             technique::KnobSpec::choice("mode", {"plain", "doubled"}, "doubled returns 2 x level")};
+  t.capabilities.environmentLights = false;
+  t.defaultSweep = {{"level", {"0.25", "0.5"}}};
+  struct Constant final : technique::Prepared {
+    double value;
+    explicit Constant(double v) : value(v) {}
+    technique::FrameResult frame(const technique::SceneDescription&, const technique::ShadeRequest& request,
+                                 technique::Statistics& stats) override {
+      stats.frameSeconds.emplace_back("constant", 0.0);
+      stats.samples = double(request.points.size());
+      stats.sampleUnit = "points";
+      technique::FrameResult out;
+      out.radiance.assign(request.points.size(), glm::dvec3(value));
+      return out;
+    }
+  };
+  t.prepare = [](const technique::SceneDescription&, const technique::KnobValues& knobs, technique::Statistics&) {
+    const double scale = knobs.pick<double>("mode", {{"plain", 1.0}, {"doubled", 2.0}});
+    return std::make_unique<Constant>(scale * knobs.real("level"));
+  };
+  return t;
+}
+
+void registerConstant() {
+  if (!technique::appRegistry().find("test-constant")) technique::appRegistry().add(constantTechnique());
+}
+
+struct CliRun {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream f(path);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+/// Runs the CLI in this process (so it sees the test's registry), capturing stdout and stderr.
+CliRun runCli(const std::vector<std::string>& words, const test::TempDir& dir) {
+  std::vector<std::string> argvText{"lucent"};
+  argvText.insert(argvText.end(), words.begin(), words.end());
+  std::vector<char*> argv;
+  for (auto& w : argvText) argv.push_back(w.data());
+  const std::string outPath = dir / "cli-out.txt", errPath = dir / "cli-err.txt";
+  std::fflush(stdout), std::fflush(stderr);
+  std::cout.flush();
+  const int savedOut = dup(1), savedErr = dup(2);
+  REQUIRE(std::freopen(outPath.c_str(), "w", stdout));
+  REQUIRE(std::freopen(errPath.c_str(), "w", stderr));
+  CliRun r;
+  r.code = lucent::cli::run(int(argv.size()), argv.data());
+  std::cout.flush();
+  std::fflush(stdout), std::fflush(stderr);
+  dup2(savedOut, 1), dup2(savedErr, 2);
+  close(savedOut), close(savedErr);
+  r.out = slurp(outPath);
+  r.err = slurp(errPath);
+  return r;
+}
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+}  // namespace
+
+TEST_CASE("A test-only technique reaches `techniques --json`, `render --method` and `bench` with no other edit") {
+  registerConstant();
+  test::TempDir dir;
+  const CliRun list = runCli({"techniques", "--json"}, dir);
+  REQUIRE(list.code == 0);
+  CHECK(contains(list.out, "\"name\": \"test-constant\""));
+  CHECK(contains(list.out, "\"vtk_name\": \"TestConstant\""));
+  CHECK(contains(list.out, "\"choices\": [\"plain\", \"doubled\"]"));
+  CHECK(contains(list.out, "\"environment_lights\": false"));
+
+  const std::string exr = dir / "c.exr";
+  const CliRun render = runCli({"render", "--shape", "sphere", "--width", "16", "--height", "16", "--quiet", "--method",
+                             "test-constant", "--knob", "level=0.25,mode=doubled", "--out", exr},
+                            dir);
+  INFO(render.err);
+  REQUIRE(render.code == 0);
+  const image::Image img = io::readExr(exr);
+  std::size_t covered = 0;
+  for (std::size_t i = 0; i < img.pixels.size(); ++i)
+    if (img.covered(i)) {
+      ++covered;
+      CHECK(img.pixels[i].g == doctest::Approx(0.5));
+    } else {
+      CHECK(img.pixels[i].g == 0);
+    }
+  CHECK(covered > 50);
+
+  const std::string csv = dir / "b.csv";
+  const CliRun bench = runCli({"bench", "--shape", "sphere", "--size-mm", "5", "--width", "12", "--height", "12", "--quiet",
+                            "--method", "test-constant", "--reference-knob", "fraction=1", "--csv", csv},
+                           dir);
+  INFO(bench.err);
+  REQUIRE(bench.code == 0);
+  const std::string table = slurp(csv);
+  CHECK(contains(table, "test-constant,\"level=0.25;mode=plain\""));  // its own default sweep
+  CHECK(contains(table, "test-constant,\"level=0.5;mode=plain\""));
+  CHECK(contains(table, "\"points\""));  // typed statistics: its sample unit
+
+  const CliRun badKnob = runCli({"render", "--method", "test-constant", "--knob", "level=2", "--out", dir / "x.exr"}, dir);
+  CHECK(badKnob.code == 2);
+  CHECK(contains(badKnob.err, "knob level must be in [0, 1], not 2"));
+}
+
+TEST_CASE("A capability mismatch exits 2 before any work, naming the techniques that can") {
+  registerConstant();
+  test::TempDir dir;
+  const std::string out = dir / "x.exr";
+  struct Case {
+    std::vector<std::string> args;
+    std::string expect, notExpected;
+  };
+  const std::vector<Case> cases = {
+      {{"--method", "hybrid", "--light", "env:uniform"}, "cannot take an environment light; techniques that can: reference, jensen-buhler, tsis, pathtrace", "hybrid,"},
+      {{"--method", "tsm", "--light", "env:uniform"}, "cannot take an environment light", "tsm,"},
+      {{"--method", "test-constant", "--light", "env:uniform"}, "techniques that can: reference", "test-constant,"},
+      {{"--method", "tsis", "--density", "noise:2"}, "cannot take a heterogeneous medium (density field); techniques that can: pathtrace", "tsis,"},
+      {{"--method", "reference", "--inclusion", "ketchup"}, "cannot take an inclusion of another material; techniques that can: pathtrace", "jensen-buhler"},
+  };
+  for (const auto& c : cases) {
+    std::vector<std::string> args{"render", "--shape", "sphere", "--width", "8", "--height", "8", "--quiet", "--out", out};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    const CliRun r = runCli(args, dir);
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK(contains(r.err, c.expect));
+    CHECK_FALSE(contains(r.err, c.notExpected));
+    CHECK_FALSE(std::filesystem::exists(out));
+  }
+}
