@@ -1,5 +1,5 @@
-/// `lucent render`: renders a scene with one technique of the registry and writes EXR/PNG images and a
-/// JSON stats file.
+/// `lucent render`: renders a scene with one technique of the registry and writes EXR/PNG images
+/// and a JSON stats file.
 #include <cstdio>
 #include <iostream>
 
@@ -15,17 +15,20 @@ namespace lucent::cli {
 
 namespace {
 std::string techniqueHelp(const technique::Registry& registry) {
-  std::string s = "\nmethods and their knobs (--knob NAME=VALUE; `lucent techniques` for ranges and capabilities):\n";
+  std::string s =
+      "\nmethods and their knobs (--knob NAME=VALUE; `lucent techniques` for ranges and "
+      "capabilities):\n";
   for (const auto& t : registry.all()) {
     s += "  " + t.name + ": " + t.summary + "\n";
     for (const auto& k : t.knobs)
-      s += "      " + k.name + " (default " + (k.defaultValue.empty() ? "none" : k.defaultValue) + "): " + k.help + "\n";
+      s += "      " + k.name + " (default " + (k.defaultValue.empty() ? "none" : k.defaultValue) +
+           "): " + k.help + "\n";
   }
   return s;
 }
 
-std::string statsJson(const Scene& scene, const technique::Technique& t, const technique::KnobValues& knobs,
-                      const ImageRun& run) {
+std::string statsJson(const Scene& scene, const technique::Technique& t,
+                      const technique::KnobValues& knobs, const ImageRun& run) {
   JsonObject knobJson, figures, material;
   for (const auto& [k, v] : knobs.values()) knobJson.add(k, v);
   for (const auto& [k, v] : run.figures) figures.add(k, v);
@@ -38,7 +41,8 @@ std::string statsJson(const Scene& scene, const technique::Technique& t, const t
   }
   auto list = [](const std::vector<std::string>& items) {
     std::string s = "[";
-    for (std::size_t i = 0; i < items.size(); ++i) s += (i ? ", " : "") + JsonObject::quote(items[i]);
+    for (std::size_t i = 0; i < items.size(); ++i)
+      s += (i ? ", " : "") + JsonObject::quote(items[i]);
     return s + "]";
   };
   JsonObject stats;
@@ -67,16 +71,23 @@ int runRender(int argc, char** argv) {
   specs.push_back({"method", "NAME", "rendering technique (default reference)"});
   specs.push_back({"knob", "NAME=VALUE", "set one of the method's knobs", true});
   specs.push_back({"spp", "N", "samples per pixel (the knob spp of techniques that have one)"});
-  specs.push_back({"out", "FILE", "output image: .exr (linear radiance, alpha = coverage) or .png (tone-mapped)", true});
-  specs.push_back({"stats", "FILE.json", "write wall time, peak memory, sample counts and every knob as JSON"});
+  specs.push_back({"out", "FILE",
+                   "output image: .exr (linear radiance, alpha = coverage) or .png (tone-mapped)",
+                   true});
+  specs.push_back(
+      {"stats", "FILE.json", "write wall time, peak memory, sample counts and every knob as JSON"});
   specs.push_back({"quiet", "", "no progress bars"});
-  Args args("render", "lucent render [--mesh FILE | --shape NAME] [--material NAME] [--light SPEC]... --out FILE", specs);
+  Args args(
+      "render",
+      "lucent render [--mesh FILE | --shape NAME] [--material NAME] [--light SPEC]... --out FILE",
+      specs);
   args.parse(argc, argv, 2);
   if (args.helpRequested()) {
     std::cout << args.helpText() << techniqueHelp(registry);
     return 0;
   }
-  if (!args.positional().empty()) args.fail("unexpected argument '" + args.positional().front() + "'");
+  if (!args.positional().empty())
+    args.fail("unexpected argument '" + args.positional().front() + "'");
   const std::vector<std::string> outputs = args.all("out");
   if (outputs.empty()) args.fail("no output: give --out FILE.exr or --out FILE.png");
   const image::ToneMap toneMap = toneMapFromArgs(args);
@@ -94,11 +105,15 @@ int runRender(int argc, char** argv) {
 
   Scene scene = buildScene(args);
   const ImageRun run = renderImage(registry, technique, scene, knobs, !args.has("quiet"));
-  for (const auto& note : run.stats.warnings) std::fprintf(stderr, "lucent render: warning: %s\n", note.c_str());
-  if (scene.medium.heterogeneous()) std::fprintf(stderr, "lucent render: density: %s\n", scene.medium.densityDescription.c_str());
-  for (const auto& inc : scene.inclusions) std::fprintf(stderr, "lucent render: inclusion: %s\n", inc.description.c_str());
+  for (const auto& note : run.stats.warnings)
+    std::fprintf(stderr, "lucent render: warning: %s\n", note.c_str());
+  if (scene.medium.heterogeneous())
+    std::fprintf(stderr, "lucent render: density: %s\n", scene.medium.densityDescription.c_str());
+  for (const auto& inc : scene.inclusions)
+    std::fprintf(stderr, "lucent render: inclusion: %s\n", inc.description.c_str());
   for (const auto& o : outputs) writeImage(o, run.image, toneMap);
-  if (args.has("stats")) io::writeTextFile(args.get("stats"), statsJson(scene, technique, knobs, run));
+  if (args.has("stats"))
+    io::writeTextFile(args.get("stats"), statsJson(scene, technique, knobs, run));
   std::fprintf(stderr, "lucent render: %s in %.2f s\n", technique.name.c_str(), run.seconds);
   return 0;
 }

@@ -1,5 +1,6 @@
-/// `lucent techniques [--json]`: every technique of the registry with its paper, capabilities and knobs
-/// (kind, default, range or choices, unit, the phase a change invalidates, help). Read, never written by hand.
+/// `lucent techniques [--json]`: every technique of the registry with its paper, capabilities and
+/// knobs (kind, default, range or choices, unit, the phase a change invalidates, help). Read, never
+/// written by hand.
 #include <cstdio>
 #include <iostream>
 
@@ -40,7 +41,9 @@ std::string jsonList(const std::vector<std::string>& items) {
 
 std::string knobJson(const KnobSpec& k) {
   JsonObject o;
-  o.add("name", k.name).add("vtk_name", technique::camelCase(k.name)).add("kind", technique::kindName(k.kind));
+  o.add("name", k.name)
+      .add("vtk_name", technique::camelCase(k.name))
+      .add("kind", technique::kindName(k.kind));
   o.add("default", k.defaultValue);
   if (k.kind == technique::KnobKind::Integer || k.kind == technique::KnobKind::Real) {
     o.add("min", k.min).add("max", k.max).raw("min_exclusive", k.minExclusive ? "true" : "false");
@@ -51,7 +54,10 @@ std::string knobJson(const KnobSpec& k) {
     o.raw("choices", jsonList(quoted));
   }
   if (!k.extension.empty()) o.add("extension", k.extension);
-  return o.add("unit", k.unit).add("invalidates", technique::phaseName(k.invalidates)).add("help", k.help).str();
+  return o.add("unit", k.unit)
+      .add("invalidates", technique::phaseName(k.invalidates))
+      .add("help", k.help)
+      .str();
 }
 
 std::string techniqueJson(const technique::Technique& t) {
@@ -68,8 +74,14 @@ std::string techniqueJson(const technique::Technique& t) {
     sweep.push_back(JsonObject().add("knob", s.knob).raw("values", jsonList(values)).str());
   }
   JsonObject o;
-  o.add("name", t.name).add("vtk_name", technique::camelCase(t.name)).add("summary", t.summary).add("paper", t.paper);
-  return o.add("capabilities", caps).raw("knobs", jsonList(knobs)).raw("default_sweep", jsonList(sweep)).str();
+  o.add("name", t.name)
+      .add("vtk_name", technique::camelCase(t.name))
+      .add("summary", t.summary)
+      .add("paper", t.paper);
+  return o.add("capabilities", caps)
+      .raw("knobs", jsonList(knobs))
+      .raw("default_sweep", jsonList(sweep))
+      .str();
 }
 
 std::string techniqueText(const technique::Technique& t) {
@@ -80,12 +92,15 @@ std::string techniqueText(const technique::Technique& t) {
   for (const auto& [name, value] : flags(t.capabilities))
     if (!value) s += std::string(" ") + name;
   if (!t.capabilities.gpuTwin.empty()) s += "\n  GPU twin: " + t.capabilities.gpuTwin;
-  s += "\n  prepare: " + t.capabilities.precomputeScaling + "; frame: " + t.capabilities.frameScaling + "\n";
+  s += "\n  prepare: " + t.capabilities.precomputeScaling +
+       "; frame: " + t.capabilities.frameScaling + "\n";
   for (const auto& k : t.knobs) {
-    const bool ranged = k.kind != technique::KnobKind::Text && k.kind != technique::KnobKind::OutputFile;
-    s += "    " + k.name + " (" + technique::kindName(k.kind) + (ranged ? " " + k.rangeText() : std::string()) +
-         (k.unit.empty() ? "" : " " + k.unit) + ", default " + (k.defaultValue.empty() ? "none" : k.defaultValue) +
-         ", invalidates " + technique::phaseName(k.invalidates) + "): " + k.help + "\n";
+    const bool ranged =
+        k.kind != technique::KnobKind::Text && k.kind != technique::KnobKind::OutputFile;
+    s += "    " + k.name + " (" + technique::kindName(k.kind) +
+         (ranged ? " " + k.rangeText() : std::string()) + (k.unit.empty() ? "" : " " + k.unit) +
+         ", default " + (k.defaultValue.empty() ? "none" : k.defaultValue) + ", invalidates " +
+         technique::phaseName(k.invalidates) + "): " + k.help + "\n";
   }
   return s;
 }
@@ -93,13 +108,15 @@ std::string techniqueText(const technique::Technique& t) {
 
 int runTechniques(int argc, char** argv) {
   Args args("techniques", "lucent techniques [--json]",
-            {{"json", "", "print the registry as JSON (what front ends and the ParaView XML generator read)"}});
+            {{"json", "",
+              "print the registry as JSON (what front ends and the ParaView XML generator read)"}});
   args.parse(argc, argv, 2);
   if (args.helpRequested()) {
     std::cout << args.helpText();
     return 0;
   }
-  if (!args.positional().empty()) args.fail("unexpected argument '" + args.positional().front() + "'");
+  if (!args.positional().empty())
+    args.fail("unexpected argument '" + args.positional().front() + "'");
   const auto& all = technique::appRegistry().all();
   if (args.has("json")) {
     std::vector<std::string> items;

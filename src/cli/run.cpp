@@ -1,4 +1,5 @@
-/// The `lucent` command line: dispatch, and bad input -> one line naming the problem and the fix, exit 2.
+/// The `lucent` command line: dispatch, and bad input -> one line naming the problem and the fix,
+/// exit 2.
 #include <unistd.h>
 
 #include <cstdio>
@@ -8,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include <lucent/technique/knob.hpp>
 #include "../plot/line_chart.hpp"
 #include "../util/error.hpp"
-#include <lucent/technique/knob.hpp>
 #include "commands.hpp"
 
 namespace {
@@ -34,7 +35,8 @@ bool wantsPlot(int argc, char** argv) {
 /// VTK on Debian draws charts through X. Without a display, run this same command under xvfb-run
 /// (once: LUCENT_UNDER_XVFB stops a loop).
 void reexecUnderXvfbIfNeeded(int argc, char** argv) {
-  if (!wantsPlot(argc, argv) || lucent::plot::chartsAvailable() || std::getenv("LUCENT_UNDER_XVFB")) return;
+  if (!wantsPlot(argc, argv) || lucent::plot::chartsAvailable() || std::getenv("LUCENT_UNDER_XVFB"))
+    return;
   setenv("LUCENT_UNDER_XVFB", "1", 1);
   std::vector<char*> args{const_cast<char*>("xvfb-run"), const_cast<char*>("-a")};
   char self[4096];
@@ -70,7 +72,8 @@ int run(int argc, char** argv) {
     if (command == "compare") return lucent::cli::runCompare(argc, argv);
     if (command == "bench") return lucent::cli::runBench(argc, argv);
     if (command == "techniques") return lucent::cli::runTechniques(argc, argv);
-    std::fprintf(stderr, "lucent: unknown command '%s'; run 'lucent --help' for the list\n", command.c_str());
+    std::fprintf(stderr, "lucent: unknown command '%s'; run 'lucent --help' for the list\n",
+                 command.c_str());
     return 2;
   } catch (const lucent::InputError& e) {
     std::fprintf(stderr, "%s\n", e.what());

@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include <lucent/scene/mesh_check.hpp>
+#include <lucent/scene/shapes.hpp>
 #include "../io/exr_io.hpp"
 #include "../io/mesh_io.hpp"
 #include "../raycast/embree_ray_caster.hpp"
@@ -11,8 +13,6 @@
 #include "../util/error.hpp"
 #include "../util/tbb_parallel.hpp"
 #include "material_options.hpp"
-#include <lucent/scene/mesh_check.hpp>
-#include <lucent/scene/shapes.hpp>
 
 namespace lucent::cli {
 
@@ -21,9 +21,10 @@ constexpr const char* kDefaultShape = "genus7";
 constexpr double kDefaultSizeMm = 30.0;
 constexpr const char* kDefaultMaterial = "skin1";
 
-/// "point:X,Y,Z[:R,G,B]" (mm; R,G,B = irradiance at the object's centre), "dir:X,Y,Z[:R,G,B]" (towards
-/// the light; irradiance), "env:FILE.exr[:SCALE]" (lat-long radiance).
-scene::Light parseLight(const Args& args, const std::string& text, double diag, std::string& description) {
+/// "point:X,Y,Z[:R,G,B]" (mm; R,G,B = irradiance at the object's centre), "dir:X,Y,Z[:R,G,B]"
+/// (towards the light; irradiance), "env:FILE.exr[:SCALE]" (lat-long radiance).
+scene::Light parseLight(const Args& args, const std::string& text, double diag,
+                        std::string& description) {
   const auto colon = text.find(':');
   const std::string kind = text.substr(0, colon);
   const std::string rest = colon == std::string::npos ? "" : text.substr(colon + 1);
@@ -32,24 +33,29 @@ scene::Light parseLight(const Args& args, const std::string& text, double diag, 
   const std::string second = colon2 == std::string::npos ? "" : rest.substr(colon2 + 1);
   const std::string what = "lucent " + args.command() + ": --light " + text;
   if (kind == "point" || kind == "dir") {
-    if (first.empty()) args.fail("--light " + text + ": give a position or direction, e.g. " + kind + ":0,50,-80");
+    if (first.empty())
+      args.fail("--light " + text + ": give a position or direction, e.g. " + kind + ":0,50,-80");
     const glm::dvec3 v = parseTriple(first, what);
     const glm::dvec3 e = second.empty() ? glm::dvec3(1) : parseTriple(second, what);
     if (glm::length(v) <= 0) args.fail("--light " + text + ": the vector must not be zero");
     std::ostringstream d;
-    d << kind << " (" << v.x << "," << v.y << "," << v.z << ") E=(" << e.x << "," << e.y << "," << e.z << ")";
+    d << kind << " (" << v.x << "," << v.y << "," << v.z << ") E=(" << e.x << "," << e.y << ","
+      << e.z << ")";
     description = d.str();
     if (kind == "point") {
       if (glm::length(v) < 0.5 * diag)
-        args.fail("--light " + text + ": the point light is inside the object's bounding sphere; move it further out");
+        args.fail("--light " + text +
+                  ": the point light is inside the object's bounding sphere; move it further out");
       return scene::PointLight{v, e * glm::dot(v, v)};
     }
     return scene::DirectionalLight{glm::normalize(v), e};
   }
   if (kind == "env") {
-    if (first.empty()) args.fail("--light env: give an EXR file, e.g. env:studio.exr, or env:uniform");
+    if (first.empty())
+      args.fail("--light env: give an EXR file, e.g. env:studio.exr, or env:uniform");
     scene::EnvironmentLight env;
-    if (first == "uniform") {  // radiance 1 (times SCALE) from every direction: the white-furnace light
+    if (first ==
+        "uniform") {  // radiance 1 (times SCALE) from every direction: the white-furnace light
       env.width = env.height = 1;
       env.radiance = {glm::vec3(1.0f)};
       env.scale = second.empty() ? 1.0 : parseNumber(second, what);
@@ -66,7 +72,8 @@ scene::Light parseLight(const Args& args, const std::string& text, double diag, 
     description = "environment " + first;
     return env;
   }
-  args.fail("--light '" + text + "': unknown kind '" + kind + "'; use point:X,Y,Z[:R,G,B], dir:X,Y,Z[:R,G,B] or env:FILE.exr[:SCALE]");
+  args.fail("--light '" + text + "': unknown kind '" + kind +
+            "'; use point:X,Y,Z[:R,G,B], dir:X,Y,Z[:R,G,B] or env:FILE.exr[:SCALE]");
 }
 /// Whether a point lies inside the closed mesh (odd crossings along a fixed direction).
 bool inside(const scene::RayCaster& caster, glm::dvec3 p, double epsilon) {
@@ -81,16 +88,21 @@ bool inside(const scene::RayCaster& caster, glm::dvec3 p, double epsilon) {
   return crossings % 2 == 1;
 }
 
-/// "--inclusion MATERIAL[:FRACTION]": a sphere of another material at the bounding-box centre, its radius
-/// FRACTION (default 0.3) of half the smallest box extent; it must lie inside the object.
+/// "--inclusion MATERIAL[:FRACTION]": a sphere of another material at the bounding-box centre, its
+/// radius FRACTION (default 0.3) of half the smallest box extent; it must lie inside the object.
 technique::Inclusion parseInclusion(const Args& args, const std::string& text, const Scene& s) {
   const auto colon = text.find(':');
   const std::string name = text.substr(0, colon);
   const auto found = optics::findMaterial(name);
-  if (!found) args.fail("--inclusion " + text + ": '" + name + "' is not a material; `lucent materials` lists them");
+  if (!found)
+    args.fail("--inclusion " + text + ": '" + name +
+              "' is not a material; `lucent materials` lists them");
   const double fraction =
-      colon == std::string::npos ? 0.3 : parseNumber(text.substr(colon + 1), "lucent " + args.command() + ": --inclusion");
-  if (!(fraction >= 1e-3 && fraction <= 1)) args.fail("--inclusion " + text + ": the radius fraction must lie in [0.001, 1]");
+      colon == std::string::npos
+          ? 0.3
+          : parseNumber(text.substr(colon + 1), "lucent " + args.command() + ": --inclusion");
+  if (!(fraction >= 1e-3 && fraction <= 1))
+    args.fail("--inclusion " + text + ": the radius fraction must lie in [0.001, 1]");
   const scene::Bounds bounds = s.mesh.bounds();
   const glm::dvec3 extent = bounds.hi - bounds.lo, centre = bounds.center();
   const double radius = fraction * 0.5 * std::min(extent.x, std::min(extent.y, extent.z));
@@ -99,7 +111,8 @@ technique::Inclusion parseInclusion(const Args& args, const std::string& text, c
   for (const auto& p : inc.surface.positions)
     if (!inside(*s.caster, glm::dvec3(p), 1e-7 * bounds.diagonal()))
       args.fail("--inclusion " + text + ": the sphere (radius " + std::to_string(radius) +
-                " mm at the bounding-box centre) is not inside the object; lower the fraction or use a shape that is "
+                " mm at the bounding-box centre) is not inside the object; lower the fraction or "
+                "use a shape that is "
                 "solid at its centre (e.g. --shape sphere)");
   inc.medium.material = *found;
   inc.contains = [centre, radius](const glm::dvec3& p) { return glm::length(p - centre) < radius; };
@@ -111,17 +124,24 @@ technique::Inclusion parseInclusion(const Args& args, const std::string& text, c
 std::vector<OptionSpec> sceneOptionSpecs() {
   std::vector<OptionSpec> specs{
       {"mesh", "FILE", "mesh to render (.ply .obj .stl .vtp .vtk)"},
-      {"shape", "NAME", std::string("built-in shape (default ") + kDefaultShape + "): sphere torus double-torus genus7 cube-cavity twirl slab"},
+      {"shape", "NAME",
+       std::string("built-in shape (default ") + kDefaultShape +
+           "): sphere torus double-torus genus7 cube-cavity twirl slab"},
       {"size-mm", "X", "scale the object so its bounding-box diagonal is X mm (default 30)"},
-      {"light", "SPEC", "point:X,Y,Z[:R,G,B] | dir:X,Y,Z[:R,G,B] | env:FILE.exr[:SCALE] | env:uniform[:SCALE] (mm; R,G,B = irradiance at the centre)", true},
+      {"light", "SPEC",
+       "point:X,Y,Z[:R,G,B] | dir:X,Y,Z[:R,G,B] | env:FILE.exr[:SCALE] | env:uniform[:SCALE] (mm; "
+       "R,G,B = irradiance at the centre)",
+       true},
       {"view", "X,Y,Z", "direction from the object towards the camera (default 0,0.6,1)"},
       {"width", "W", "image width in pixels (default 400)"},
       {"height", "H", "image height in pixels (default 400)"},
       {"skip-mesh-check", "", "render even if the mesh is not closed and outward-oriented"},
-      {"density", "SPEC", "heterogeneous medium: sigma_a and sigma_s' times a density, noise:F, FILE.vdb[:GRID] or "
-                          "FILE.vti[:ARRAY] (fitted to the bounding box)"},
-      {"inclusion", "MATERIAL[:F]", "a sphere of another material at the bounding-box centre, radius F (default "
-                                    "0.3) of half the smallest extent"},
+      {"density", "SPEC",
+       "heterogeneous medium: sigma_a and sigma_s' times a density, noise:F, FILE.vdb[:GRID] or "
+       "FILE.vti[:ARRAY] (fitted to the bounding box)"},
+      {"inclusion", "MATERIAL[:F]",
+       "a sphere of another material at the bounding-box centre, radius F (default "
+       "0.3) of half the smallest extent"},
   };
   for (auto& m : materialOptionSpecs()) specs.push_back(m);
   return specs;
@@ -143,7 +163,9 @@ Scene buildScene(const Args& args) {
     if (!report.ok()) {
       std::string msg = "mesh '" + s.meshName + "' does not bound a volume:";
       for (const auto& p : report.problems()) msg += "\n  - " + p;
-      msg += "\n  (or pass --skip-mesh-check to render it anyway; subsurface results will not be physical)";
+      msg +=
+          "\n  (or pass --skip-mesh-check to render it anyway; subsurface results will not be "
+          "physical)";
       throw InputError("lucent " + args.command() + ": " + msg);
     }
   }
@@ -158,11 +180,14 @@ Scene buildScene(const Args& args) {
     s.lightDescriptions.push_back(d);
   }
   if (s.lights.empty()) {
-    // Default: a back light above and behind the object (the translucent glow) and a weak frontal fill.
+    // Default: a back light above and behind the object (the translucent glow) and a weak frontal
+    // fill.
     const glm::dvec3 back = glm::normalize(glm::dvec3(0.3, 0.9, -1.0)) * (2.0 * diag);
     s.lights.push_back(scene::PointLight{back, glm::dvec3(1.0) * glm::dot(back, back)});
-    s.lights.push_back(scene::DirectionalLight{glm::normalize(glm::dvec3(-0.6, 0.5, 1.0)), glm::dvec3(0.12)});
-    s.lightDescriptions = {"point back light (irradiance 1 at the centre)", "directional front fill (0.12)"};
+    s.lights.push_back(
+        scene::DirectionalLight{glm::normalize(glm::dvec3(-0.6, 0.5, 1.0)), glm::dvec3(0.12)});
+    s.lightDescriptions = {"point back light (irradiance 1 at the centre)",
+                           "directional front fill (0.12)"};
   }
 
   const int w = args.integer("width", 400, 1, 16384), h = args.integer("height", 400, 1, 16384);
@@ -171,12 +196,14 @@ Scene buildScene(const Args& args) {
   s.camera = scene::PinholeCamera::frame(s.mesh.bounds(), view, w, h);
   s.ownedCaster = std::make_unique<raycast::EmbreeRayCaster>(s.mesh);
   s.caster = s.ownedCaster.get();
-  s.makeRayCaster = [](const scene::TriangleMesh& m) { return std::make_unique<raycast::EmbreeRayCaster>(m); };
+  s.makeRayCaster = [](const scene::TriangleMesh& m) {
+    return std::make_unique<raycast::EmbreeRayCaster>(m);
+  };
   s.parallelFor = util::tbbFor;
 
   if (args.has("density")) {
-    const render::DensityField field = render::parseDensityField("lucent " + args.command() + ": --density",
-                                                                 args.get("density"), s.mesh.bounds());
+    const render::DensityField field = render::parseDensityField(
+        "lucent " + args.command() + ": --density", args.get("density"), s.mesh.bounds());
     s.medium.density = field.at;
     s.medium.densityDescription = field.description;
   }

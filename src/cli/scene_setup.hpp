@@ -1,7 +1,7 @@
 #pragma once
 /// @file scene_setup.hpp
-/// @brief The scene options render and bench share (mesh or shape, size, material, media, lights, camera),
-/// and the built-in default scene: a back-lit skin1 genus-7 ring, whose thin parts glow.
+/// @brief The scene options render and bench share (mesh or shape, size, material, media, lights,
+/// camera), and the built-in default scene: a back-lit skin1 genus-7 ring, whose thin parts glow.
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,8 +17,8 @@
 
 namespace lucent::cli {
 
-/// What every technique reads (technique::SceneDescription, with Embree ray casting and TBB loops), plus
-/// what the CLI adds: the camera, the size asked for, and the lights as the user wrote them.
+/// What every technique reads (technique::SceneDescription, with Embree ray casting and TBB loops),
+/// plus what the CLI adds: the camera, the size asked for, and the lights as the user wrote them.
 struct Scene : technique::SceneDescription {
   double sizeMm = 0;
   std::vector<std::string> lightDescriptions;

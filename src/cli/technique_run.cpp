@@ -41,7 +41,8 @@ class StageBars {
 image::Image toImage(const scene::PinholeCamera& camera, const technique::ShadeRequest& request,
                      const std::vector<glm::dvec3>& values) {
   image::Image img(camera.width, camera.height);
-  for (std::size_t i = 0; i < request.pixels.size(); ++i) img.pixels[request.pixels[i]] = glm::vec4(glm::vec3(values[i]), 1.0f);
+  for (std::size_t i = 0; i < request.pixels.size(); ++i)
+    img.pixels[request.pixels[i]] = glm::vec4(glm::vec3(values[i]), 1.0f);
   return img;
 }
 }  // namespace
@@ -59,8 +60,8 @@ void checkOutputKnobs(const technique::KnobValues& knobs) {
       io::checkWritable(knobs.text(spec.name));
 }
 
-ImageRun renderImage(const technique::Registry& registry, const technique::Technique& technique, Scene& scene,
-                     const technique::KnobValues& knobs, bool progress) {
+ImageRun renderImage(const technique::Registry& registry, const technique::Technique& technique,
+                     Scene& scene, const technique::KnobValues& knobs, bool progress) {
   StageBars bars(progress);
   scene.progress = [&bars](const std::string& stage, double f) { bars.update(stage, f); };
   const technique::ShadeRequest request = technique::pixelRequest(scene.camera, scene);

@@ -1,8 +1,8 @@
 #pragma once
 /// @file technique_run.hpp
 /// @brief How the CLI's render and bench run any technique of the registry on a scene: knobs from
-/// --knob pairs, output-file knobs checked before work, progress bars per stage, one frame through the
-/// camera's pixels, the radiance as an image.
+/// --knob pairs, output-file knobs checked before work, progress bars per stage, one frame through
+/// the camera's pixels, the radiance as an image.
 #include <map>
 #include <string>
 #include <vector>
@@ -16,22 +16,24 @@
 namespace lucent::cli {
 
 struct ImageRun {
-  image::Image image;                ///< radiance in RGB, coverage in A
+  image::Image image;  ///< radiance in RGB, coverage in A
   technique::Statistics stats;
   std::map<std::string, double> figures;  ///< stats.flat() plus the pixels shaded
-  std::vector<std::pair<std::string, image::Image>> extras;  ///< per-pixel extras (e.g. stderr), by name
+  std::vector<std::pair<std::string, image::Image>>
+      extras;  ///< per-pixel extras (e.g. stderr), by name
   double seconds = 0;
 };
 
 /// "NAME=VALUE[,NAME=VALUE...]" from every occurrence of `option`, in order.
 technique::KnobList knobArgs(const Args& args, const std::string& option);
 
-/// The technique's output-file knobs that are set: each must be writable (checked now, before any work).
+/// The technique's output-file knobs that are set: each must be writable (checked now, before any
+/// work).
 void checkOutputKnobs(const technique::KnobValues& knobs);
 
-/// Prepare and one frame of `technique` on every pixel the camera sees, with progress bars unless quiet;
-/// output-file knobs get their extras written.
-ImageRun renderImage(const technique::Registry& registry, const technique::Technique& technique, Scene& scene,
-                     const technique::KnobValues& knobs, bool progress);
+/// Prepare and one frame of `technique` on every pixel the camera sees, with progress bars unless
+/// quiet; output-file knobs get their extras written.
+ImageRun renderImage(const technique::Registry& registry, const technique::Technique& technique,
+                     Scene& scene, const technique::KnobValues& knobs, bool progress);
 
 }  // namespace lucent::cli

@@ -1,6 +1,7 @@
 #pragma once
 /// @file atomic_file.hpp
-/// @brief Write to "<path>.tmp-<pid>", rename onto <path> on commit(); remove the temporary otherwise.
+/// @brief Write to "<path>.tmp-<pid>", rename onto <path> on commit(); remove the temporary
+/// otherwise.
 #include <unistd.h>
 
 #include <filesystem>
@@ -12,12 +13,13 @@
 
 namespace lucent::io {
 
-/// Throws InputError naming the file when it cannot be written because its folder is missing: front ends
-/// call this for every output before any work, so nothing is written unless everything can be.
+/// Throws InputError naming the file when it cannot be written because its folder is missing: front
+/// ends call this for every output before any work, so nothing is written unless everything can be.
 inline void checkWritable(const std::string& path) {
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
   if (!parent.empty() && !std::filesystem::is_directory(parent))
-    throw InputError("cannot write '" + path + "': folder '" + parent.string() + "' does not exist; create it first");
+    throw InputError("cannot write '" + path + "': folder '" + parent.string() +
+                     "' does not exist; create it first");
 }
 
 class AtomicFile {

@@ -14,7 +14,8 @@ namespace lucent::render {
 
 namespace {
 /// Splits "FILE.ext:NAME" into the file and the name after the extension ("" when none).
-bool splitFileSpec(const std::string& spec, const std::string& ext, std::string& path, std::string& name) {
+bool splitFileSpec(const std::string& spec, const std::string& ext, std::string& path,
+                   std::string& name) {
   const auto at = spec.find(ext + ":");
   if (at != std::string::npos) {
     path = spec.substr(0, at + ext.size());
@@ -30,7 +31,8 @@ bool splitFileSpec(const std::string& spec, const std::string& ext, std::string&
 }
 }  // namespace
 
-DensityField parseDensityField(const std::string& option, const std::string& spec, const scene::Bounds& bounds) {
+DensityField parseDensityField(const std::string& option, const std::string& spec,
+                               const scene::Bounds& bounds) {
   DensityField field;
   if (spec.empty()) return field;
   const std::string what = option + " " + spec;
@@ -40,7 +42,8 @@ DensityField parseDensityField(const std::string& option, const std::string& spe
       periods = std::stod(spec.substr(6));
     } catch (const std::exception&) {
     }
-    if (!(periods > 0) || !std::isfinite(periods)) throw InputError(what + ": noise:F needs F > 0, e.g. noise:3");
+    if (!(periods > 0) || !std::isfinite(periods))
+      throw InputError(what + ": noise:F needs F > 0, e.g. noise:3");
     const double k = 2 * optics::kPi * periods / bounds.diagonal();
     const glm::dvec3 lo = bounds.lo;
     field.at = [k, lo](const glm::dvec3& p) {
@@ -57,19 +60,22 @@ DensityField parseDensityField(const std::string& option, const std::string& spe
   else if (splitFileSpec(spec, ".vti", path, name))
     voxels = std::make_shared<scene::VoxelGrid>(io::readImageVolume(path, name));
   else
-    throw InputError(what + ": give noise:F, an OpenVDB file FILE.vdb[:GRID] or a VTK volume FILE.vti[:ARRAY]");
+    throw InputError(
+        what + ": give noise:F, an OpenVDB file FILE.vdb[:GRID] or a VTK volume FILE.vti[:ARRAY]");
   double maxValue = 0;
   for (float v : voxels->values) maxValue = std::max(maxValue, double(v));
   if (!(maxValue > 0))
-    throw InputError(path + ": the density has no positive value; a medium needs density > 0 somewhere");
+    throw InputError(path +
+                     ": the density has no positive value; a medium needs density > 0 somewhere");
   const glm::dvec3 lo = bounds.lo, extent = bounds.hi - bounds.lo;
   field.at = [voxels, maxValue, lo, extent](const glm::dvec3& p) {
     const glm::dvec3 u = (p - lo) / extent;
     const glm::dvec3 local = voxels->origin + u * glm::dvec3(voxels->dims - 1) * voxels->voxelSize;
     return std::max(0.0, voxels->sample(local) / maxValue);
   };
-  field.description = path + " (" + std::to_string(voxels->dims.x) + "x" + std::to_string(voxels->dims.y) + "x" +
-                      std::to_string(voxels->dims.z) + " voxels fitted to the mesh's bounding box, divided by its maximum)";
+  field.description = path + " (" + std::to_string(voxels->dims.x) + "x" +
+                      std::to_string(voxels->dims.y) + "x" + std::to_string(voxels->dims.z) +
+                      " voxels fitted to the mesh's bounding box, divided by its maximum)";
   return field;
 }
 

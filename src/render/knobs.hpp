@@ -1,7 +1,7 @@
 #pragma once
 /// @file knobs.hpp
-/// @brief The CLI spelling of knob settings: "name=value[,name=value...]". The knobs themselves (types,
-/// defaults, ranges) are declared by each technique (lucent/technique/knob.hpp).
+/// @brief The CLI spelling of knob settings: "name=value[,name=value...]". The knobs themselves
+/// (types, defaults, ranges) are declared by each technique (lucent/technique/knob.hpp).
 #include <map>
 #include <string>
 

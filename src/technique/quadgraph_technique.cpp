@@ -1,7 +1,8 @@
-/// The QuadGraph diffusion technique (quadgraph-diffusion): prepare is a QuadGraphPipeline (TetGen, levels,
-/// transfers: once per mesh); a frame is irradiance at the surface nodes, the per-channel solve and Eq. 7,
-/// mapped to the requested points or shown on the Sec. 5.3 triangulation of the surface nodes.
-/// An adapter (it links the AGPL TetGen target and VTK for the .vtu export), registered by app_registry.cpp.
+/// The QuadGraph diffusion technique (quadgraph-diffusion): prepare is a QuadGraphPipeline (TetGen,
+/// levels, transfers: once per mesh); a frame is irradiance at the surface nodes, the per-channel
+/// solve and Eq. 7, mapped to the requested points or shown on the Sec. 5.3 triangulation of the
+/// surface nodes. An adapter (it links the AGPL TetGen target and VTK for the .vtu export),
+/// registered by app_registry.cpp.
 #include <lucent/quadgraph/surface_mapping.hpp>
 #include <lucent/reference/vertex_radiosity.hpp>
 #include <lucent/technique/technique.hpp>
@@ -20,11 +21,13 @@ render::QuadGraphOptions pipelineOptions(const KnobValues& knobs) {
   o.gradingK = knobs.real("K");
   o.quality = knobs.real("quality");
   o.relaxIterations = int(knobs.integer("relax"));
-  o.packing = knobs.pick<std::string>("packing", {{"blocks", "blocks"}, {"random", "random"}, {"none", "none"}});
+  o.packing = knobs.pick<std::string>(
+      "packing", {{"blocks", "blocks"}, {"random", "random"}, {"none", "none"}});
   o.blockSide = std::size_t(knobs.integer("block"));
-  o.solver = knobs.pick<quadgraph::Solver>("solver", {{"jacobi", quadgraph::Solver::Jacobi},
-                                                      {"sor", quadgraph::Solver::Sor},
-                                                      {"cg", quadgraph::Solver::ConjugateGradient}});
+  o.solver =
+      knobs.pick<quadgraph::Solver>("solver", {{"jacobi", quadgraph::Solver::Jacobi},
+                                               {"sor", quadgraph::Solver::Sor},
+                                               {"cg", quadgraph::Solver::ConjugateGradient}});
   o.stencil = knobs.pick<quadgraph::Stencil>(
       "stencil", {{"fv", quadgraph::Stencil::FiniteVolume}, {"paper", quadgraph::Stencil::Paper}});
   o.solve.tolerance = knobs.real("tolerance");
@@ -34,7 +37,8 @@ render::QuadGraphOptions pipelineOptions(const KnobValues& knobs) {
   return o;
 }
 
-/// sigma_a, sigma_s' at a point: the inclusion that contains it, else the object's medium, times its density.
+/// sigma_a, sigma_s' at a point: the inclusion that contains it, else the object's medium, times
+/// its density.
 render::MediumField mediumField(const SceneDescription& scene) {
   return [&scene](const glm::dvec3& p, int c) {
     const Medium* m = &scene.medium;
@@ -42,7 +46,8 @@ render::MediumField mediumField(const SceneDescription& scene) {
       if (inc.contains && inc.contains(p)) m = &inc.medium;
     // A density of 0 leaves no medium; keep a trace so the diffusion coefficient stays finite.
     const double scale = m->density ? std::max(m->density(p), 1e-6) : 1.0;
-    return std::pair<double, double>{scale * m->material.sigmaA[c], scale * m->material.sigmaSPrime[c]};
+    return std::pair<double, double>{scale * m->material.sigmaA[c],
+                                     scale * m->material.sigmaSPrime[c]};
   };
 }
 
@@ -50,11 +55,13 @@ void solveFigures(const render::QuadGraphFrame& frame, Statistics& stats) {
   for (int c = 0; c < 3; ++c) {
     const auto& reports = frame.reports[std::size_t(c)];
     for (std::size_t h = 0; h < reports.size(); ++h) {
-      stats.figures["iterations_level" + std::to_string(h) + "_" + "rgb"[c]] = reports[h].iterations;
+      stats.figures["iterations_level" + std::to_string(h) + "_" + "rgb"[c]] =
+          reports[h].iterations;
       if (!reports[h].converged)
         stats.warnings.push_back("quadgraph: level " + std::to_string(h) + " channel " + "RGB"[c] +
                                  " stopped at the iteration limit with residual " +
-                                 std::to_string(reports[h].relativeResidual) + "; raise iterations");
+                                 std::to_string(reports[h].relativeResidual) +
+                                 "; raise iterations");
     }
     stats.figures[std::string("residual_") + "rgb"[c]] = reports.back().relativeResidual;
   }
@@ -62,17 +69,18 @@ void solveFigures(const render::QuadGraphFrame& frame, Statistics& stats) {
   stats.frameSeconds.emplace_back("solve", frame.solveSeconds);
   stats.figures["negative_exitance_nodes"] = double(frame.clampedNodes);
   if (frame.clampedNodes > 0)
-    stats.warnings.push_back("quadgraph: " + std::to_string(frame.clampedNodes) +
-                             " surface node values had phi < 2q (Eq. 7 negative) and were set to 0: the tets are "
-                             "coarse for this absorption; lower K or refine the mesh");
+    stats.warnings.push_back(
+        "quadgraph: " + std::to_string(frame.clampedNodes) +
+        " surface node values had phi < 2q (Eq. 7 negative) and were set to 0: the tets are "
+        "coarse for this absorption; lower K or refine the mesh");
 }
 
 class QuadGraphTechnique final : public Prepared {
  public:
   QuadGraphTechnique(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats)
       : mKnobs(knobs), mPipeline(stats.timePrepare("graph", [&] {
-          return render::QuadGraphPipeline(scene.mesh, scene.meshName, pipelineOptions(knobs), stats.warnings,
-                                           bool(scene.progress));
+          return render::QuadGraphPipeline(scene.mesh, scene.meshName, pipelineOptions(knobs),
+                                           stats.warnings, bool(scene.progress));
         })) {
     const quadgraph::QuadGraph& fine = mPipeline.finest();
     stats.samples = double(fine.nodeCount());
@@ -86,23 +94,30 @@ class QuadGraphTechnique final : public Prepared {
     stats.figures["solver_bytes"] = mPipeline.solverBytes();
   }
 
-  FrameResult frame(const SceneDescription& scene, const ShadeRequest& request, Statistics& stats) override {
+  FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
+                    Statistics& stats) override {
     const double eta = scene.medium.material.eta;
     const auto q = stats.timeFrame("irradiance", [&] {
-      return mPipeline.irradiance(scene.mesh, scene.vertexNormals, scene.lights, *scene.caster, eta);
+      return mPipeline.irradiance(scene.mesh, scene.vertexNormals, scene.lights, *scene.caster,
+                                  eta);
     });
     scene.checkCancelled();
-    const render::QuadGraphFrame frame = mPipeline.solve(q, mediumField(scene), eta, bool(scene.progress));
+    const render::QuadGraphFrame frame =
+        mPipeline.solve(q, mediumField(scene), eta, bool(scene.progress));
     solveFigures(frame, stats);
     FrameResult out;
     out.radiosity = stats.timeFrame("evaluation", [&] {
-      return mKnobs.pick<bool>("display", {{"mesh", false}, {"nodes", true}}) ? onNodeSurface(scene, request, frame, stats)
-                                                                               : onMesh(scene, request, frame);
+      return mKnobs.pick<bool>("display", {{"mesh", false}, {"nodes", true}})
+                 ? onNodeSurface(scene, request, frame, stats)
+                 : onMesh(scene, request, frame);
     });
     if (const std::string& path = mKnobs.text("vtu"); !path.empty())
       io::writeQuadGraphVtu(path, mPipeline.finest(),
-                            {{"flux_r", frame.flux[0]}, {"flux_g", frame.flux[1]}, {"flux_b", frame.flux[2]},
-                             {"kappa_r", frame.kappa[0]}, {"mu_r", frame.mu[0]}});
+                            {{"flux_r", frame.flux[0]},
+                             {"flux_g", frame.flux[1]},
+                             {"flux_b", frame.flux[2]},
+                             {"kappa_r", frame.kappa[0]},
+                             {"mu_r", frame.mu[0]}});
     return out;
   }
 
@@ -114,29 +129,36 @@ class QuadGraphTechnique final : public Prepared {
     for (int c = 0; c < 3; ++c) {
       std::vector<double> values(frame.radiosity.size());
       for (std::size_t s = 0; s < values.size(); ++s) values[s] = frame.radiosity[s][c];
-      const auto v = quadgraph::nodesToVertices(mPipeline.finest(), scene.mesh, mPipeline.sourceBarycentrics(), values);
+      const auto v = quadgraph::nodesToVertices(mPipeline.finest(), scene.mesh,
+                                                mPipeline.sourceBarycentrics(), values);
       for (std::size_t i = 0; i < v.size(); ++i) vertexB[i][c] = v[i];
     }
     std::vector<glm::dvec3> b(request.points.size());
-    for (std::size_t i = 0; i < b.size(); ++i) b[i] = reference::interpolateAtHit(scene.mesh, vertexB, request.points[i]);
+    for (std::size_t i = 0; i < b.size(); ++i)
+      b[i] = reference::interpolateAtHit(scene.mesh, vertexB, request.points[i]);
     return b;
   }
 
-  /// Sec. 5.3: the surface nodes triangulated; each pixel's camera ray shades the node surface it meets.
+  /// Sec. 5.3: the surface nodes triangulated; each pixel's camera ray shades the node surface it
+  /// meets.
   std::vector<glm::dvec3> onNodeSurface(const SceneDescription& scene, const ShadeRequest& request,
-                                        const render::QuadGraphFrame& frame, Statistics& stats) const {
+                                        const render::QuadGraphFrame& frame,
+                                        Statistics& stats) const {
     if (!request.camera)
-      throw RequestError("technique 'quadgraph' knob display=nodes shows the node surface through a camera; "
-                         "use display=mesh for per-vertex output");
+      throw RequestError(
+          "technique 'quadgraph' knob display=nodes shows the node surface through a camera; "
+          "use display=mesh for per-vertex output");
     const scene::TriangleMesh nodeMesh = mPipeline.nodeSurface().mesh(mPipeline.finest());
     const auto caster = scene.makeRayCaster(nodeMesh);
     stats.figures["display_triangles"] = double(nodeMesh.triangles.size());
     std::vector<glm::dvec3> b(request.points.size(), glm::dvec3(0));
     for (std::size_t i = 0; i < b.size(); ++i) {
       const std::size_t pixel = request.pixels[i];
-      const scene::Ray ray = request.camera->primaryRay(double(pixel % std::size_t(request.camera->width)),
-                                                        double(pixel / std::size_t(request.camera->width)));
-      if (const auto hit = caster->intersect(ray.origin, ray.direction, 0, std::numeric_limits<double>::infinity())) {
+      const scene::Ray ray =
+          request.camera->primaryRay(double(pixel % std::size_t(request.camera->width)),
+                                     double(pixel / std::size_t(request.camera->width)));
+      if (const auto hit = caster->intersect(ray.origin, ray.direction, 0,
+                                             std::numeric_limits<double>::infinity())) {
         reference::ShadingPoint p;
         p.triangle = hit->triangle, p.u = hit->u, p.v = hit->v;
         b[i] = reference::interpolateAtHit(nodeMesh, frame.radiosity, p);
@@ -154,24 +176,50 @@ class QuadGraphTechnique final : public Prepared {
 Technique quadgraphTechnique() {
   Technique t;
   t.name = "quadgraph";
-  t.summary = "QuadGraph: the diffusion equation solved on a tetrahedralization's dual graph (quadgraph-diffusion)";
-  t.paper = "quadgraph-diffusion, Eq. 1-2 (diffusion), Eq. 5-9 (graph stencil and relaxation), Eq. 7 (exitance), Sec. 4.3";
+  t.summary =
+      "QuadGraph: the diffusion equation solved on a tetrahedralization's dual graph "
+      "(quadgraph-diffusion)";
+  t.paper =
+      "quadgraph-diffusion, Eq. 1-2 (diffusion), Eq. 5-9 (graph stencil and relaxation), Eq. 7 "
+      "(exitance), Sec. 4.3";
   const Phase P = Phase::Prepare;
   t.knobs = {
-      KnobSpec::real("K", "1", 0, 100, "", "tet size growth with depth: h(x) = h_surface + K * distance to the surface (Sec. 4.1)", P),
-      KnobSpec::integer("levels", 2, 1, 6, "multi-resolution levels (Sec. 4.3): each coarser level has 1/4 of the surface triangles", P),
-      KnobSpec::choice("solver", {"jacobi", "sor", "cg"}, "jacobi (the paper's Eq. 8-9), sor (multi-colour over-relaxation) or cg (conjugate gradients)", P, "cg"),
-      KnobSpec::real("tolerance", "1e-4", 1e-14, 1, "", "stop each level at this relative residual ||b - M phi|| / ||b||", P),
+      KnobSpec::real(
+          "K", "1", 0, 100, "",
+          "tet size growth with depth: h(x) = h_surface + K * distance to the surface (Sec. 4.1)",
+          P),
+      KnobSpec::integer(
+          "levels", 2, 1, 6,
+          "multi-resolution levels (Sec. 4.3): each coarser level has 1/4 of the surface triangles",
+          P),
+      KnobSpec::choice("solver", {"jacobi", "sor", "cg"},
+                       "jacobi (the paper's Eq. 8-9), sor (multi-colour over-relaxation) or cg "
+                       "(conjugate gradients)",
+                       P, "cg"),
+      KnobSpec::real("tolerance", "1e-4", 1e-14, 1, "",
+                     "stop each level at this relative residual ||b - M phi|| / ||b||", P),
       KnobSpec::integer("iterations", 20000, 1, 10000000, "most iterations per level", P),
       KnobSpec::real("omega", "1.6", 0.01, 1.99, "", "SOR relaxation factor in (0, 2)", P),
-      KnobSpec::choice("stencil", {"fv", "paper"}, "fv (finite-volume face fluxes) or paper (Eq. 5's 1/d^2 weights; see diffusion_system.hpp)", P),
-      KnobSpec::integer("relax", 3, 0, 50, "bounded relaxation iterations of the inner nodes toward even spacing", P),
-      KnobSpec::real("quality", "2.0", 1.1, 10, "", "TetGen radius-edge bound (-q): smaller = rounder tets, more of them", P),
-      KnobSpec::choice("packing", {"blocks", "random", "none"}, "node order: blocks (BFS blocks, Sec. 5.1), random (the paper's baseline) or none", P),
+      KnobSpec::choice("stencil", {"fv", "paper"},
+                       "fv (finite-volume face fluxes) or paper (Eq. 5's 1/d^2 weights; see "
+                       "diffusion_system.hpp)",
+                       P),
+      KnobSpec::integer("relax", 3, 0, 50,
+                        "bounded relaxation iterations of the inner nodes toward even spacing", P),
+      KnobSpec::real("quality", "2.0", 1.1, 10, "",
+                     "TetGen radius-edge bound (-q): smaller = rounder tets, more of them", P),
+      KnobSpec::choice(
+          "packing", {"blocks", "random", "none"},
+          "node order: blocks (BFS blocks, Sec. 5.1), random (the paper's baseline) or none", P),
       KnobSpec::integer("block", 32, 1, 1024, "block side r (r x r nodes per block)", P),
-      KnobSpec::integer("env-strata", 16, 1, 256, "environment light: strata x strata directions per surface node", P),
-      KnobSpec::choice("display", {"mesh", "nodes"}, "mesh (node values mapped to the input mesh's vertices) or nodes (Sec. 5.3: the surface nodes triangulated and rendered)"),
-      KnobSpec::outputFile("vtu", ".vtu", "write the finest graph with flux per channel, kappa and mu to this .vtu file")};
+      KnobSpec::integer("env-strata", 16, 1, 256,
+                        "environment light: strata x strata directions per surface node", P),
+      KnobSpec::choice("display", {"mesh", "nodes"},
+                       "mesh (node values mapped to the input mesh's vertices) or nodes (Sec. 5.3: "
+                       "the surface nodes triangulated and rendered)"),
+      KnobSpec::outputFile(
+          "vtu", ".vtu",
+          "write the finest graph with flux per channel, kappa and mu to this .vtu file")};
   Capabilities& c = t.capabilities;
   c.heterogeneousMedia = c.inclusions = true;
   c.dynamicShape = true;

@@ -1,7 +1,7 @@
 #pragma once
 /// @file techniques.hpp
-/// @brief The registry the lucent application (CLI, bench, examples) reads: the core techniques plus those
-/// whose adapters need a heavy library.
+/// @brief The registry the lucent application (CLI, bench, examples) reads: the core techniques
+/// plus those whose adapters need a heavy library.
 #include <lucent/technique/registry.hpp>
 
 namespace lucent::technique {

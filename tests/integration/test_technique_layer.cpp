@@ -1,6 +1,7 @@
-// The technique layer as the front ends meet it: a technique registered by a test alone (no other edit)
-// shows up in `lucent techniques --json`, runs through `render --method` and `bench`, and is refused
-// before any work where its capabilities do not reach; the same check holds for the built-in techniques.
+// The technique layer as the front ends meet it: a technique registered by a test alone (no other
+// edit) shows up in `lucent techniques --json`, runs through `render --method` and `bench`, and is
+// refused before any work where its capabilities do not reach; the same check holds for the
+// built-in techniques.
 #include <doctest/doctest.h>
 
 #include <unistd.h>
@@ -25,14 +26,16 @@ technique::Technique constantTechnique() {
   t.name = "test-constant";
   t.summary = "test only: constant radiance";
   t.paper = "none";
-  t.knobs = {technique::KnobSpec::real("level", "0.5", 0, 1, "", "the radiance returned"),
-             technique::KnobSpec::choice("mode", {"plain", "doubled"}, "doubled returns 2 x level")};
+  t.knobs = {
+      technique::KnobSpec::real("level", "0.5", 0, 1, "", "the radiance returned"),
+      technique::KnobSpec::choice("mode", {"plain", "doubled"}, "doubled returns 2 x level")};
   t.capabilities.environmentLights = false;
   t.defaultSweep = {{"level", {"0.25", "0.5"}}};
   struct Constant final : technique::Prepared {
     double value;
     explicit Constant(double v) : value(v) {}
-    technique::FrameResult frame(const technique::SceneDescription&, const technique::ShadeRequest& request,
+    technique::FrameResult frame(const technique::SceneDescription&,
+                                 const technique::ShadeRequest& request,
                                  technique::Statistics& stats) override {
       stats.frameSeconds.emplace_back("constant", 0.0);
       stats.samples = double(request.points.size());
@@ -42,7 +45,8 @@ technique::Technique constantTechnique() {
       return out;
     }
   };
-  t.prepare = [](const technique::SceneDescription&, const technique::KnobValues& knobs, technique::Statistics&) {
+  t.prepare = [](const technique::SceneDescription&, const technique::KnobValues& knobs,
+                 technique::Statistics&) {
     const double scale = knobs.pick<double>("mode", {{"plain", 1.0}, {"doubled", 2.0}});
     return std::make_unique<Constant>(scale * knobs.real("level"));
   };
@@ -50,7 +54,8 @@ technique::Technique constantTechnique() {
 }
 
 void registerConstant() {
-  if (!technique::appRegistry().find("test-constant")) technique::appRegistry().add(constantTechnique());
+  if (!technique::appRegistry().find("test-constant"))
+    technique::appRegistry().add(constantTechnique());
 }
 
 struct CliRun {
@@ -88,10 +93,14 @@ CliRun runCli(const std::vector<std::string>& words, const test::TempDir& dir) {
   return r;
 }
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool contains(const std::string& s, const std::string& part) {
+  return s.find(part) != std::string::npos;
+}
 }  // namespace
 
-TEST_CASE("A test-only technique reaches `techniques --json`, `render --method` and `bench` with no other edit") {
+TEST_CASE(
+    "A test-only technique reaches `techniques --json`, `render --method` and `bench` with no "
+    "other edit") {
   registerConstant();
   test::TempDir dir;
   const CliRun list = runCli({"techniques", "--json"}, dir);
@@ -102,9 +111,10 @@ TEST_CASE("A test-only technique reaches `techniques --json`, `render --method` 
   CHECK(contains(list.out, "\"environment_lights\": false"));
 
   const std::string exr = dir / "c.exr";
-  const CliRun render = runCli({"render", "--shape", "sphere", "--width", "16", "--height", "16", "--quiet", "--method",
-                             "test-constant", "--knob", "level=0.25,mode=doubled", "--out", exr},
-                            dir);
+  const CliRun render =
+      runCli({"render", "--shape", "sphere", "--width", "16", "--height", "16", "--quiet",
+              "--method", "test-constant", "--knob", "level=0.25,mode=doubled", "--out", exr},
+             dir);
   INFO(render.err);
   REQUIRE(render.code == 0);
   const image::Image img = io::readExr(exr);
@@ -119,9 +129,10 @@ TEST_CASE("A test-only technique reaches `techniques --json`, `render --method` 
   CHECK(covered > 50);
 
   const std::string csv = dir / "b.csv";
-  const CliRun bench = runCli({"bench", "--shape", "sphere", "--size-mm", "5", "--width", "12", "--height", "12", "--quiet",
-                            "--method", "test-constant", "--reference-knob", "fraction=1", "--csv", csv},
-                           dir);
+  const CliRun bench = runCli(
+      {"bench", "--shape", "sphere", "--size-mm", "5", "--width", "12", "--height", "12", "--quiet",
+       "--method", "test-constant", "--reference-knob", "fraction=1", "--csv", csv},
+      dir);
   INFO(bench.err);
   REQUIRE(bench.code == 0);
   const std::string table = slurp(csv);
@@ -129,7 +140,8 @@ TEST_CASE("A test-only technique reaches `techniques --json`, `render --method` 
   CHECK(contains(table, "test-constant,\"level=0.5;mode=plain\""));
   CHECK(contains(table, "\"points\""));  // typed statistics: its sample unit
 
-  const CliRun badKnob = runCli({"render", "--method", "test-constant", "--knob", "level=2", "--out", dir / "x.exr"}, dir);
+  const CliRun badKnob = runCli(
+      {"render", "--method", "test-constant", "--knob", "level=2", "--out", dir / "x.exr"}, dir);
   CHECK(badKnob.code == 2);
   CHECK(contains(badKnob.err, "knob level must be in [0, 1], not 2"));
 }
@@ -143,14 +155,24 @@ TEST_CASE("A capability mismatch exits 2 before any work, naming the techniques 
     std::string expect, notExpected;
   };
   const std::vector<Case> cases = {
-      {{"--method", "hybrid", "--light", "env:uniform"}, "cannot take an environment light; techniques that can: reference, jensen-buhler, tsis, pathtrace", "hybrid,"},
+      {{"--method", "hybrid", "--light", "env:uniform"},
+       "cannot take an environment light; techniques that can: reference, jensen-buhler, tsis, "
+       "pathtrace",
+       "hybrid,"},
       {{"--method", "tsm", "--light", "env:uniform"}, "cannot take an environment light", "tsm,"},
-      {{"--method", "test-constant", "--light", "env:uniform"}, "techniques that can: reference", "test-constant,"},
-      {{"--method", "tsis", "--density", "noise:2"}, "cannot take a heterogeneous medium (density field); techniques that can: pathtrace", "tsis,"},
-      {{"--method", "reference", "--inclusion", "ketchup"}, "cannot take an inclusion of another material; techniques that can: pathtrace", "jensen-buhler"},
+      {{"--method", "test-constant", "--light", "env:uniform"},
+       "techniques that can: reference",
+       "test-constant,"},
+      {{"--method", "tsis", "--density", "noise:2"},
+       "cannot take a heterogeneous medium (density field); techniques that can: pathtrace",
+       "tsis,"},
+      {{"--method", "reference", "--inclusion", "ketchup"},
+       "cannot take an inclusion of another material; techniques that can: pathtrace",
+       "jensen-buhler"},
   };
   for (const auto& c : cases) {
-    std::vector<std::string> args{"render", "--shape", "sphere", "--width", "8", "--height", "8", "--quiet", "--out", out};
+    std::vector<std::string> args{"render",   "--shape", "sphere",  "--width", "8",
+                                  "--height", "8",       "--quiet", "--out",   out};
     args.insert(args.end(), c.args.begin(), c.args.end());
     const CliRun r = runCli(args, dir);
     INFO(r.err);

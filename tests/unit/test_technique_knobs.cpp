@@ -1,5 +1,6 @@
-// Typed knobs and the registry's own rules: values are checked against their spec before any work, the
-// CamelCase names front ends derive are unique, and capability checks name the techniques that can.
+// Typed knobs and the registry's own rules: values are checked against their spec before any work,
+// the CamelCase names front ends derive are unique, and capability checks name the techniques that
+// can.
 #include <doctest/doctest.h>
 
 #include <lucent/technique/core_techniques.hpp>
@@ -8,8 +9,10 @@ using namespace lucent::technique;
 
 namespace {
 std::vector<KnobSpec> specs() {
-  return {KnobSpec::integer("samples", 16, 1, 4096, "n"), KnobSpec::real("bound", "0.05", 0, kUnbounded, "mm^-1", "c", Phase::Frame, true),
-          KnobSpec::choice("sampler", {"mip", "row"}, "s"), KnobSpec::outputFile("vtu", ".vtu", "o")};
+  return {KnobSpec::integer("samples", 16, 1, 4096, "n"),
+          KnobSpec::real("bound", "0.05", 0, kUnbounded, "mm^-1", "c", Phase::Frame, true),
+          KnobSpec::choice("sampler", {"mip", "row"}, "s"),
+          KnobSpec::outputFile("vtu", ".vtu", "o")};
 }
 std::string errorOf(const KnobList& given) {
   try {
@@ -21,23 +24,32 @@ std::string errorOf(const KnobList& given) {
 }
 }  // namespace
 
-TEST_CASE("Knob values: defaults, typed reads, and each kind's check with the range in the message") {
+TEST_CASE(
+    "Knob values: defaults, typed reads, and each kind's check with the range in the message") {
   const KnobValues v(specs(), {{"samples", "64"}}, "t");
   CHECK(v.integer("samples") == 64);
   CHECK(v.real("bound") == doctest::Approx(0.05));
   CHECK(v.text("sampler") == "mip");
   CHECK(v.summary(true) == "samples=64");
-  CHECK(errorOf({{"samples", "0"}}) == "technique 't' knob samples must be an integer in [1, 4096], not 0");
-  CHECK(errorOf({{"samples", "2.5"}}) == "technique 't' knob samples must be an integer in [1, 4096], not 2.5");
-  CHECK(errorOf({{"samples", "nan"}}) == "technique 't' knob samples must be a finite number, not 'nan'");
+  CHECK(errorOf({{"samples", "0"}}) ==
+        "technique 't' knob samples must be an integer in [1, 4096], not 0");
+  CHECK(errorOf({{"samples", "2.5"}}) ==
+        "technique 't' knob samples must be an integer in [1, 4096], not 2.5");
+  CHECK(errorOf({{"samples", "nan"}}) ==
+        "technique 't' knob samples must be a finite number, not 'nan'");
   CHECK(errorOf({{"bound", "0"}}) == "technique 't' knob bound must be > 0, not 0");
-  CHECK(errorOf({{"sampler", "cdf"}}) == "technique 't' knob sampler must be mip or row, not 'cdf'");
-  CHECK(errorOf({{"vtu", "graph.txt"}}) == "technique 't' knob vtu='graph.txt' must name a .vtu file");
-  CHECK(errorOf({{"warp", "9"}}) == "technique 't' has no knob 'warp'; its knobs are: samples, bound, sampler, vtu");
+  CHECK(errorOf({{"sampler", "cdf"}}) ==
+        "technique 't' knob sampler must be mip or row, not 'cdf'");
+  CHECK(errorOf({{"vtu", "graph.txt"}}) ==
+        "technique 't' knob vtu='graph.txt' must name a .vtu file");
+  CHECK(errorOf({{"warp", "9"}}) ==
+        "technique 't' has no knob 'warp'; its knobs are: samples, bound, sampler, vtu");
   CHECK(errorOf({{"vtu", "g.vtu"}}).empty());
 }
 
-TEST_CASE("CamelCase names are mechanical, and the registry refuses knobs whose CamelCase names collide") {
+TEST_CASE(
+    "CamelCase names are mechanical, and the registry refuses knobs whose CamelCase names "
+    "collide") {
   CHECK(camelCase("chart-angle") == "ChartAngle");
   CHECK(camelCase("jensen-buhler") == "JensenBuhler");
   CHECK(camelCase("K") == "K");
@@ -51,7 +63,9 @@ TEST_CASE("CamelCase names are mechanical, and the registry refuses knobs whose 
   CHECK_THROWS_AS(r.add(t), std::logic_error);  // the same name twice
 }
 
-TEST_CASE("Every core technique: valid defaults, unique knob names, and a default sweep over its own knobs") {
+TEST_CASE(
+    "Every core technique: valid defaults, unique knob names, and a default sweep over its own "
+    "knobs") {
   Registry r;
   addCoreTechniques(r);
   CHECK(r.all().size() == 6);
@@ -66,7 +80,8 @@ TEST_CASE("Every core technique: valid defaults, unique knob names, and a defaul
     }
     CHECK_NOTHROW(t.values(t.referenceKnobs));
   }
-  CHECK_THROWS_WITH_AS(r.get("magic"), doctest::Contains("available: reference, jensen-buhler, tsis"), RequestError);
+  CHECK_THROWS_WITH_AS(
+      r.get("magic"), doctest::Contains("available: reference, jensen-buhler, tsis"), RequestError);
 }
 
 TEST_CASE("Capabilities: the unmet requirements are named") {

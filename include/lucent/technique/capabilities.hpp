@@ -1,7 +1,8 @@
 #pragma once
 /// @file capabilities.hpp
-/// @brief What a technique can do, declared with it, and what a scene and request call for: the planner
-/// reads the first, and a mismatch is reported before any work, naming the techniques that can.
+/// @brief What a technique can do, declared with it, and what a scene and request call for: the
+/// planner reads the first, and a mismatch is reported before any work, naming the techniques that
+/// can.
 #include <string>
 #include <vector>
 
@@ -26,15 +27,16 @@ struct Capabilities {
   bool dynamicMaterial = true;
   bool dynamicShape = false;
   ///@}
-  ///@{ Where it produces radiance: any surface point (per pixel), mesh vertices, or only along camera rays.
+  ///@{ Where it produces radiance: any surface point (per pixel), mesh vertices, or only along
+  ///camera rays.
   bool perPixel = true;
   bool perVertex = true;
   bool needsCamera = false;
   ///@}
-  bool groundTruth = false;          ///< a reference other techniques are measured against
-  std::string gpuTwin;               ///< the GPU implementation of the same technique, if any
-  std::string precomputeScaling;     ///< how prepare's cost grows, e.g. "O(A / spacing^2) samples"
-  std::string frameScaling;          ///< how a frame's cost grows
+  bool groundTruth = false;       ///< a reference other techniques are measured against
+  std::string gpuTwin;            ///< the GPU implementation of the same technique, if any
+  std::string precomputeScaling;  ///< how prepare's cost grows, e.g. "O(A / spacing^2) samples"
+  std::string frameScaling;       ///< how a frame's cost grows
 };
 
 /// What one scene and request call for.
@@ -50,7 +52,8 @@ inline std::vector<std::string> unmet(const Capabilities& c, const Requirements&
   if (r.pointLight && !c.pointLights) out.push_back("a point light");
   if (r.directionalLight && !c.directionalLights) out.push_back("a directional light");
   if (r.environmentLight && !c.environmentLights) out.push_back("an environment light");
-  if (r.heterogeneousMedium && !c.heterogeneousMedia) out.push_back("a heterogeneous medium (density field)");
+  if (r.heterogeneousMedium && !c.heterogeneousMedia)
+    out.push_back("a heterogeneous medium (density field)");
   if (r.inclusions && !c.inclusions) out.push_back("an inclusion of another material");
   if (r.perVertex && !c.perVertex) out.push_back("per-vertex output");
   if (!r.camera && c.needsCamera) out.push_back("shading without a camera");

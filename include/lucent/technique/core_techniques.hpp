@@ -1,7 +1,8 @@
 #pragma once
 /// @file core_techniques.hpp
-/// @brief The header-only techniques (STL + GLM, services through SceneDescription). Adding one is one
-/// file and one line here; techniques that need a heavy library register from their adapter in src/.
+/// @brief The header-only techniques (STL + GLM, services through SceneDescription). Adding one is
+/// one file and one line here; techniques that need a heavy library register from their adapter in
+/// src/.
 #include "dipole_sum.hpp"
 #include "path_tracing.hpp"
 #include "registry.hpp"

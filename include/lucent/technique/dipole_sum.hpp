@@ -1,8 +1,9 @@
 #pragma once
 /// @file dipole_sum.hpp
-/// @brief The dipole-sum techniques: the brute-force truth (exact Rd summed over dense surface samples,
-/// texture-space-importance-sampling Eq. 2-3) and Jensen & Buhler's hierarchical approximation of the same
-/// sum. Prepare places the samples; a frame computes their irradiance and sums B at every point.
+/// @brief The dipole-sum techniques: the brute-force truth (exact Rd summed over dense surface
+/// samples, texture-space-importance-sampling Eq. 2-3) and Jensen & Buhler's hierarchical
+/// approximation of the same sum. Prepare places the samples; a frame computes their irradiance and
+/// sums B at every point.
 #include <memory>
 #include <string>
 
@@ -16,16 +17,19 @@ namespace lucent::technique {
 namespace detail {
 
 inline std::vector<KnobSpec> dipoleSumKnobs() {
-  return {KnobSpec::real("spacing", "0", 0, 1e9, "mm", "sample spacing; 0 = fraction x the smallest mean free path",
-                         Phase::Prepare),
-          KnobSpec::real("fraction", "0.5", 0, kUnbounded, "",
-                         "spacing as a fraction of the smallest mean free path (when spacing = 0)", Phase::Prepare,
-                         true),
-          KnobSpec::integer("max-samples", 2000000, 1, 200000000,
-                            "sample budget; the spacing is coarsened (with a warning) to respect it", Phase::Prepare),
-          KnobSpec::integer("env-strata", 16, 1, 256, "environment light: strata x strata directions per sample"),
-          KnobSpec::choice("precision", {"float", "double"},
-                           "scalar of the Rd sum (sums accumulate in double)", Phase::Frame)};
+  return {
+      KnobSpec::real("spacing", "0", 0, 1e9, "mm",
+                     "sample spacing; 0 = fraction x the smallest mean free path", Phase::Prepare),
+      KnobSpec::real("fraction", "0.5", 0, kUnbounded, "",
+                     "spacing as a fraction of the smallest mean free path (when spacing = 0)",
+                     Phase::Prepare, true),
+      KnobSpec::integer("max-samples", 2000000, 1, 200000000,
+                        "sample budget; the spacing is coarsened (with a warning) to respect it",
+                        Phase::Prepare),
+      KnobSpec::integer("env-strata", 16, 1, 256,
+                        "environment light: strata x strata directions per sample"),
+      KnobSpec::choice("precision", {"float", "double"},
+                       "scalar of the Rd sum (sums accumulate in double)", Phase::Frame)};
 }
 
 inline Capabilities dipoleSumCapabilities() {
@@ -39,7 +43,8 @@ inline Capabilities dipoleSumCapabilities() {
 template <class Summation>
 class DipoleSum final : public Prepared {
  public:
-  DipoleSum(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats, Summation summation)
+  DipoleSum(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats,
+            Summation summation)
       : mKnobs(knobs), mSummation(std::move(summation)) {
     const auto& m = scene.medium.material;
     const auto dipole = optics::Dipole<double>::make(m.sigmaA, m.sigmaSPrime, m.eta);
@@ -49,13 +54,16 @@ class DipoleSum final : public Prepared {
       choice.spacing = knobs.real("spacing");
       choice.meanFreePath = mfp;
     } else {
-      choice = reference::chooseSpacing(scene.mesh, mfp, knobs.real("fraction"), std::size_t(knobs.integer("max-samples")));
+      choice = reference::chooseSpacing(scene.mesh, mfp, knobs.real("fraction"),
+                                        std::size_t(knobs.integer("max-samples")));
     }
     if (choice.budgetLimited)
       stats.warnings.push_back("sample budget reached: spacing " + std::to_string(choice.spacing) +
-                               " mm is coarser than " + knobs.text("fraction") + " x the mean free path " +
-                               std::to_string(mfp) + " mm; raise max-samples for a converged truth");
-    mSamples = stats.timePrepare("samples", [&] { return reference::buildSurfaceSamples(scene.mesh, choice.spacing); });
+                               " mm is coarser than " + knobs.text("fraction") +
+                               " x the mean free path " + std::to_string(mfp) +
+                               " mm; raise max-samples for a converged truth");
+    mSamples = stats.timePrepare(
+        "samples", [&] { return reference::buildSurfaceSamples(scene.mesh, choice.spacing); });
     stats.samples = double(mSamples.size());
     stats.sampleUnit = "surface samples";
     stats.bytes = double(mSamples.size()) * (3 * sizeof(glm::dvec3) + sizeof(double));
@@ -65,25 +73,30 @@ class DipoleSum final : public Prepared {
     stats.figures["spacing_over_mfp"] = choice.spacing / mfp;
   }
 
-  FrameResult frame(const SceneDescription& scene, const ShadeRequest& request, Statistics& stats) override {
+  FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
+                    Statistics& stats) override {
     FrameResult out;
-    if (mKnobs.text("precision") == "double") out.radiosity = sum<double>(scene, request, stats);
-    else out.radiosity = sum<float>(scene, request, stats);
+    if (mKnobs.text("precision") == "double")
+      out.radiosity = sum<double>(scene, request, stats);
+    else
+      out.radiosity = sum<float>(scene, request, stats);
     return out;
   }
 
  private:
   template <class T>
-  std::vector<glm::dvec3> sum(const SceneDescription& scene, const ShadeRequest& request, Statistics& stats) {
+  std::vector<glm::dvec3> sum(const SceneDescription& scene, const ShadeRequest& request,
+                              Statistics& stats) {
     const auto& m = scene.medium.material;
-    const auto dipole = optics::Dipole<T>::make(optics::Rgb<T>(m.sigmaA), optics::Rgb<T>(m.sigmaSPrime), T(m.eta));
+    const auto dipole =
+        optics::Dipole<T>::make(optics::Rgb<T>(m.sigmaA), optics::Rgb<T>(m.sigmaSPrime), T(m.eta));
     scene::IrradianceSettings irr;
     irr.eta = m.eta;
     irr.rayEpsilon = scene.rayEpsilon();
     irr.environmentStrata = int(mKnobs.integer("env-strata"));
     const auto truth = stats.timeFrame("irradiance", [&] {
-      return reference::DipoleTruth<T>(mSamples, dipole, scene.lights, *scene.caster, irr, scene.parallelFor,
-                                       scene.stage("irradiance"));
+      return reference::DipoleTruth<T>(mSamples, dipole, scene.lights, *scene.caster, irr,
+                                       scene.parallelFor, scene.stage("irradiance"));
     });
     stats.figures["lit_samples"] = double(truth.stats().litSamples);
     scene.checkCancelled();
@@ -96,8 +109,8 @@ class DipoleSum final : public Prepared {
 };
 
 template <class Summation>
-std::unique_ptr<Prepared> makeDipoleSum(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats,
-                                        Summation summation) {
+std::unique_ptr<Prepared> makeDipoleSum(const SceneDescription& scene, const KnobValues& knobs,
+                                        Statistics& stats, Summation summation) {
   return std::make_unique<DipoleSum<Summation>>(scene, knobs, stats, std::move(summation));
 }
 
@@ -106,19 +119,27 @@ std::unique_ptr<Prepared> makeDipoleSum(const SceneDescription& scene, const Kno
 inline Technique referenceTechnique() {
   Technique t;
   t.name = "reference";
-  t.summary = "brute-force dipole truth: exact Rd summed over dense surface samples (model truth for dipole methods)";
-  t.paper = "Jensen, Marschner, Levoy, Hanrahan 2001, Eq. 5 (dipole); texture-space-importance-sampling Eq. 2-3";
+  t.summary =
+      "brute-force dipole truth: exact Rd summed over dense surface samples (model truth for "
+      "dipole methods)";
+  t.paper =
+      "Jensen, Marschner, Levoy, Hanrahan 2001, Eq. 5 (dipole); texture-space-importance-sampling "
+      "Eq. 2-3";
   t.knobs = detail::dipoleSumKnobs();
   t.capabilities = detail::dipoleSumCapabilities();
   t.capabilities.groundTruth = true;
   t.defaultSweep = {{"fraction", {"2", "1", "0.5", "0.25"}}};
   t.referenceKnobs = {{"fraction", "0.125"}};
   t.prepare = [](const SceneDescription& scene, const KnobValues& knobs, Statistics& stats) {
-    return detail::makeDipoleSum(scene, knobs, stats, [](const auto& truth, const SceneDescription& s,
-                                                         const ShadeRequest& request, Statistics& st) {
-      st.figures["rd_evaluations"] = double(request.points.size()) * double(truth.stats().litSamples);
-      return st.timeFrame("evaluation", [&] { return radiosityAt(truth, s, request, "Rd sum"); });
-    });
+    return detail::makeDipoleSum(scene, knobs, stats,
+                                 [](const auto& truth, const SceneDescription& s,
+                                    const ShadeRequest& request, Statistics& st) {
+                                   st.figures["rd_evaluations"] = double(request.points.size()) *
+                                                                  double(truth.stats().litSamples);
+                                   return st.timeFrame("evaluation", [&] {
+                                     return radiosityAt(truth, s, request, "Rd sum");
+                                   });
+                                 });
   };
   return t;
 }
@@ -126,25 +147,34 @@ inline Technique referenceTechnique() {
 inline Technique jensenBuhlerTechnique() {
   Technique t;
   t.name = "jensen-buhler";
-  t.summary = "Jensen & Buhler 2002: the same samples in an octree, far clusters summed as one source";
-  t.paper = "Jensen, Buhler 2002, A Rapid Hierarchical Rendering Technique for Translucent Materials, Sec. 3";
+  t.summary =
+      "Jensen & Buhler 2002: the same samples in an octree, far clusters summed as one source";
+  t.paper =
+      "Jensen, Buhler 2002, A Rapid Hierarchical Rendering Technique for Translucent Materials, "
+      "Sec. 3";
   t.knobs = detail::dipoleSumKnobs();
-  t.knobs.push_back(KnobSpec::real("epsilon", "0.05", 0, kUnbounded, "",
-                                   "error bound: a node is one source when its area / distance^2 < epsilon (0 = exact sum)"));
+  t.knobs.push_back(KnobSpec::real(
+      "epsilon", "0.05", 0, kUnbounded, "",
+      "error bound: a node is one source when its area / distance^2 < epsilon (0 = exact sum)"));
   t.capabilities = detail::dipoleSumCapabilities();
   t.capabilities.frameScaling = "O(points x log(lit samples)) for epsilon > 0";
   t.defaultSweep = {{"epsilon", {"1", "0.3", "0.1", "0.03"}}};
   t.prepare = [](const SceneDescription& scene, const KnobValues& knobs, Statistics& stats) {
     const double epsilon = knobs.real("epsilon");
-    return detail::makeDipoleSum(scene, knobs, stats, [epsilon](const auto& truth, const SceneDescription& s,
-                                                                const ShadeRequest& request, Statistics& st) {
-      using Truth = std::decay_t<decltype(truth)>;
-      using T = std::decay_t<decltype(truth.dipole().eta)>;
-      static_assert(std::is_same_v<Truth, reference::DipoleTruth<T>>);
-      const auto tree = st.timeFrame("octree", [&] { return reference::JensenBuhlerTree<T>(truth, epsilon); });
-      st.figures["octree_nodes"] = double(tree.nodeCount());
-      return st.timeFrame("evaluation", [&] { return radiosityAt(tree, s, request, "octree sum"); });
-    });
+    return detail::makeDipoleSum(scene, knobs, stats,
+                                 [epsilon](const auto& truth, const SceneDescription& s,
+                                           const ShadeRequest& request, Statistics& st) {
+                                   using Truth = std::decay_t<decltype(truth)>;
+                                   using T = std::decay_t<decltype(truth.dipole().eta)>;
+                                   static_assert(std::is_same_v<Truth, reference::DipoleTruth<T>>);
+                                   const auto tree = st.timeFrame("octree", [&] {
+                                     return reference::JensenBuhlerTree<T>(truth, epsilon);
+                                   });
+                                   st.figures["octree_nodes"] = double(tree.nodeCount());
+                                   return st.timeFrame("evaluation", [&] {
+                                     return radiosityAt(tree, s, request, "octree sum");
+                                   });
+                                 });
   };
   return t;
 }

@@ -1,8 +1,8 @@
 #pragma once
 /// @file path_tracing.hpp
-/// @brief The volumetric path tracer as a technique: the physical truth every dipole technique is measured
-/// against. The object becomes one medium (sigma_s = sigma_s' / (1 - g)), with the scene's density field
-/// and inclusions; it traces the camera's rays, so it needs a camera.
+/// @brief The volumetric path tracer as a technique: the physical truth every dipole technique is
+/// measured against. The object becomes one medium (sigma_s = sigma_s' / (1 - g)), with the scene's
+/// density field and inclusions; it traces the camera's rays, so it needs a camera.
 #include <cmath>
 #include <memory>
 #include <string>
@@ -24,17 +24,20 @@ inline reference::Medium pathTracerMedium(const Medium& medium, double g, bool m
   return m;
 }
 
-inline reference::PathTracerSettings pathTracerSettings(const SceneDescription& scene, const KnobValues& knobs) {
+inline reference::PathTracerSettings pathTracerSettings(const SceneDescription& scene,
+                                                        const KnobValues& knobs) {
   reference::PathTracerSettings s;
   s.samplesPerPixel = int(knobs.integer("spp"));
   s.seed = std::uint64_t(knobs.integer("seed"));
   s.maxEvents = std::uint64_t(knobs.integer("max-events"));
   s.subsurfaceOnly = knobs.integer("subsurface") == 1;
-  s.orders = knobs.pick<reference::ScatteringOrders>("orders", {{"all", reference::ScatteringOrders::All},
-                                                                {"single", reference::ScatteringOrders::Single},
-                                                                {"multiple", reference::ScatteringOrders::Multiple}});
+  s.orders = knobs.pick<reference::ScatteringOrders>(
+      "orders", {{"all", reference::ScatteringOrders::All},
+                 {"single", reference::ScatteringOrders::Single},
+                 {"multiple", reference::ScatteringOrders::Multiple}});
   s.environment = knobs.pick<reference::EnvironmentStrategy>(
-      "env", {{"escape", reference::EnvironmentStrategy::Escape}, {"connect", reference::EnvironmentStrategy::Connect}});
+      "env", {{"escape", reference::EnvironmentStrategy::Escape},
+              {"connect", reference::EnvironmentStrategy::Connect}});
   s.lightSubpaths = int(knobs.integer("light-paths"));
   s.connectableOnly = knobs.pick<bool>("paths", {{"all", false}, {"connectable", true}});
   s.guideRadius = knobs.real("guide-radius");
@@ -43,12 +46,13 @@ inline reference::PathTracerSettings pathTracerSettings(const SceneDescription& 
 }
 
 /// Standard errors: per pixel (relative, mean over lit pixels) and of the whole image's mean.
-inline void standardErrorFigures(const std::vector<glm::dvec3>& mean, const std::vector<glm::dvec3>& error,
-                                 Statistics& stats) {
+inline void standardErrorFigures(const std::vector<glm::dvec3>& mean,
+                                 const std::vector<glm::dvec3>& error, Statistics& stats) {
   double relSum = 0, meanSum = 0, varSum = 0;
   std::size_t lit = 0;
   for (std::size_t i = 0; i < mean.size(); ++i) {
-    const double lum = (mean[i].x + mean[i].y + mean[i].z) / 3, lumErr = (error[i].x + error[i].y + error[i].z) / 3;
+    const double lum = (mean[i].x + mean[i].y + mean[i].z) / 3,
+                 lumErr = (error[i].x + error[i].y + error[i].z) / 3;
     meanSum += lum;
     varSum += lumErr * lumErr;
     if (lum > 0) relSum += lumErr / lum, ++lit;
@@ -61,9 +65,13 @@ inline void pathTracerWarnings(const reference::PathTracerStats& st, Statistics&
   auto warn = [&](std::uint64_t n, const std::string& what) {
     if (n) stats.warnings.push_back("pathtrace: " + std::to_string(n) + " " + what);
   };
-  warn(st.truncatedPaths, "paths reached max-events and were dropped (their weight is lost: a bias); raise max-events");
+  warn(
+      st.truncatedPaths,
+      "paths reached max-events and were dropped (their weight is lost: a bias); raise max-events");
   warn(st.leakedPaths, "paths found no surface from inside the medium (is the mesh closed?)");
-  warn(st.mediumMismatches, "surface crossings disagreed with the media on either side (self-intersecting or nested wrongly?)");
+  warn(st.mediumMismatches,
+       "surface crossings disagreed with the media on either side (self-intersecting or nested "
+       "wrongly?)");
   warn(st.medium.majorantViolations, "density samples exceeded the majorant and were clamped");
   warn(st.nonFiniteSamples, "non-finite estimates were dropped (please report this)");
 }
@@ -72,7 +80,8 @@ class PathTracing final : public Prepared {
  public:
   explicit PathTracing(const KnobValues& knobs) : mKnobs(knobs) {}
 
-  FrameResult frame(const SceneDescription& scene, const ShadeRequest& request, Statistics& stats) override {
+  FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
+                    Statistics& stats) override {
     const reference::PathTracerSettings s = pathTracerSettings(scene, mKnobs);
     const double g = mKnobs.real("g");
     const bool matched = mKnobs.pick<bool>("boundary", {{"fresnel", false}, {"matched", true}});
@@ -80,14 +89,16 @@ class PathTracing final : public Prepared {
     const auto objectId = media.addMedium(pathTracerMedium(scene.medium, g, matched));
     media.addBody(scene.mesh, objectId, 0);
     for (const auto& inclusion : scene.inclusions)
-      media.addBody(inclusion.surface, media.addMedium(pathTracerMedium(inclusion.medium, g, matched)), objectId);
+      media.addBody(inclusion.surface,
+                    media.addMedium(pathTracerMedium(inclusion.medium, g, matched)), objectId);
     const auto caster = scene.makeRayCaster(media.mesh);
     const reference::VolumePathTracer tracer(media, *caster, scene.lights, s);
     if (tracer.joinsDeltaLights())
-      stats.warnings.push_back("pathtrace: point/directional light behind a refracting boundary is reached by light "
-                               "subpaths joined to camera segments; paths whose every scatter-to-scatter segment is "
-                               "specular (single scattering among them) cannot be sampled and are left out "
-                               "(boundary=matched or an environment light include them)");
+      stats.warnings.push_back(
+          "pathtrace: point/directional light behind a refracting boundary is reached by light "
+          "subpaths joined to camera segments; paths whose every scatter-to-scatter segment is "
+          "specular (single scattering among them) cannot be sampled and are left out "
+          "(boundary=matched or an environment light include them)");
     const reference::PathTracedImage img = stats.timeFrame("path_tracing", [&] {
       return reference::renderPathTraced(tracer, *caster, *request.camera, s, scene.parallelFor,
                                          scene.stage("path tracing"));
@@ -125,21 +136,44 @@ class PathTracing final : public Prepared {
 inline Technique pathtraceTechnique() {
   Technique t;
   t.name = "pathtrace";
-  t.summary = "volumetric Monte Carlo path tracing inside the mesh (physical truth: every scattering order, exact boundary)";
-  t.paper = "Woodcock delta tracking, hero-wavelength MIS (Wilkie et al. 2014), radiative transfer equation";
+  t.summary =
+      "volumetric Monte Carlo path tracing inside the mesh (physical truth: every scattering "
+      "order, exact boundary)";
+  t.paper =
+      "Woodcock delta tracking, hero-wavelength MIS (Wilkie et al. 2014), radiative transfer "
+      "equation";
   t.knobs = {
-      KnobSpec::integer("spp", 16, 1, 1 << 20, "samples per pixel (the error falls as 1/sqrt(spp); see the reported standard error)"),
-      KnobSpec::integer("seed", 1, 0, 1000000000000000LL, "random seed (fixed seeds give identical images on any thread count)"),
-      KnobSpec::real("g", "0", -0.99, 0.99, "", "HG mean cosine; sigma_s = sigma_s' / (1 - g) keeps the material's reduced coefficient"),
-      KnobSpec::choice("boundary", {"fresnel", "matched"}, "fresnel (the material's eta) or matched (eta 1: no refraction, no reflection)"),
-      KnobSpec::integer("subsurface", 0, 0, 1, "1 = leave out the camera's first surface reflection (what the dipole methods render)"),
+      KnobSpec::integer(
+          "spp", 16, 1, 1 << 20,
+          "samples per pixel (the error falls as 1/sqrt(spp); see the reported standard error)"),
+      KnobSpec::integer("seed", 1, 0, 1000000000000000LL,
+                        "random seed (fixed seeds give identical images on any thread count)"),
+      KnobSpec::real(
+          "g", "0", -0.99, 0.99, "",
+          "HG mean cosine; sigma_s = sigma_s' / (1 - g) keeps the material's reduced coefficient"),
+      KnobSpec::choice(
+          "boundary", {"fresnel", "matched"},
+          "fresnel (the material's eta) or matched (eta 1: no refraction, no reflection)"),
+      KnobSpec::integer(
+          "subsurface", 0, 0, 1,
+          "1 = leave out the camera's first surface reflection (what the dipole methods render)"),
       KnobSpec::choice("orders", {"all", "single", "multiple"}, "scattering orders counted"),
-      KnobSpec::choice("env", {"escape", "connect"}, "environment light: escape (paths that leave look it up) or connect (light subpaths)"),
-      KnobSpec::choice("paths", {"all", "connectable"}, "escaping paths counted: all, or connectable (those a delta light could reach through a refracting boundary)"),
-      KnobSpec::integer("light-paths", 1, 1, 1024, "light subpaths per delta light and camera sample (behind a refracting boundary)"),
-      KnobSpec::real("guide-radius", "0", 0, 1e9, "mm", "spread of light entry points around the camera's (0 = 1/sigma_tr of the material)"),
-      KnobSpec::integer("max-events", 200000, 10, 1000000000, "surface and scattering events per path before it is dropped (counted)"),
-      KnobSpec::outputFile("stderr", ".exr", "write the per-pixel standard error image to this EXR file")};
+      KnobSpec::choice(
+          "env", {"escape", "connect"},
+          "environment light: escape (paths that leave look it up) or connect (light subpaths)"),
+      KnobSpec::choice("paths", {"all", "connectable"},
+                       "escaping paths counted: all, or connectable (those a delta light could "
+                       "reach through a refracting boundary)"),
+      KnobSpec::integer(
+          "light-paths", 1, 1, 1024,
+          "light subpaths per delta light and camera sample (behind a refracting boundary)"),
+      KnobSpec::real(
+          "guide-radius", "0", 0, 1e9, "mm",
+          "spread of light entry points around the camera's (0 = 1/sigma_tr of the material)"),
+      KnobSpec::integer("max-events", 200000, 10, 1000000000,
+                        "surface and scattering events per path before it is dropped (counted)"),
+      KnobSpec::outputFile("stderr", ".exr",
+                           "write the per-pixel standard error image to this EXR file")};
   Capabilities& c = t.capabilities;
   c.heterogeneousMedia = c.inclusions = true;
   c.singleScattering = true;

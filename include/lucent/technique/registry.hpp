@@ -1,7 +1,8 @@
 #pragma once
 /// @file registry.hpp
-/// @brief The techniques every front end lists and runs. A technique is added once (core_techniques.hpp
-/// for the header-only ones, an adapter for those that need a heavy library); front ends never name one.
+/// @brief The techniques every front end lists and runs. A technique is added once
+/// (core_techniques.hpp for the header-only ones, an adapter for those that need a heavy library);
+/// front ends never name one.
 #include <string>
 #include <vector>
 
@@ -18,15 +19,15 @@ struct Rendered {
 
 class Registry {
  public:
-  /// Adds a technique; its name must be new, its default knobs valid, and its knob names unique also in
-  /// their CamelCase form (the VTK property names).
+  /// Adds a technique; its name must be new, its default knobs valid, and its knob names unique
+  /// also in their CamelCase form (the VTK property names).
   void add(Technique t) {
     if (find(t.name)) throw std::logic_error("technique '" + t.name + "' is registered twice");
     for (std::size_t i = 0; i < t.knobs.size(); ++i)
       for (std::size_t j = 0; j < i; ++j)
         if (camelCase(t.knobs[i].name) == camelCase(t.knobs[j].name))
-          throw std::logic_error("technique '" + t.name + "': knobs " + t.knobs[i].name + " and " + t.knobs[j].name +
-                                 " have the same CamelCase name");
+          throw std::logic_error("technique '" + t.name + "': knobs " + t.knobs[i].name + " and " +
+                                 t.knobs[j].name + " have the same CamelCase name");
     t.values();  // the defaults must pass their own checks
     mAll.push_back(std::move(t));
   }
@@ -39,19 +40,22 @@ class Registry {
   /// Throws RequestError listing the techniques when `name` is unknown.
   const Technique& get(const std::string& name) const {
     if (const Technique* t = find(name)) return *t;
-    throw RequestError("unknown technique '" + name + "'; available: " + names([](const Technique&) { return true; }));
+    throw RequestError("unknown technique '" + name +
+                       "'; available: " + names([](const Technique&) { return true; }));
   }
 
-  /// Fails before any work when the technique cannot serve the scene and request, naming those that can.
+  /// Fails before any work when the technique cannot serve the scene and request, naming those that
+  /// can.
   void check(const Technique& t, const SceneDescription& scene, const ShadeRequest& request) const {
     const Requirements needs = requirementsOf(scene, request);
     const auto missing = unmet(t.capabilities, needs);
     if (missing.empty()) return;
     std::string what;
     for (const auto& m : missing) what += (what.empty() ? "" : ", ") + m;
-    const std::string able = names([&](const Technique& o) { return unmet(o.capabilities, needs).empty(); });
-    throw RequestError("technique '" + t.name + "' cannot take " + what + "; techniques that can: " +
-                       (able.empty() ? "none" : able));
+    const std::string able =
+        names([&](const Technique& o) { return unmet(o.capabilities, needs).empty(); });
+    throw RequestError("technique '" + t.name + "' cannot take " + what +
+                       "; techniques that can: " + (able.empty() ? "none" : able));
   }
 
   /// check, prepare, one frame, radiance completed from radiosity.

@@ -1,8 +1,8 @@
 #pragma once
 /// @file scene.hpp
-/// @brief The scene every technique reads: the surface, its media (one spelling for all techniques), the
-/// lights, the services a technique may use (ray casting, a parallel loop, progress and cancel), and the
-/// points a frame shades.
+/// @brief The scene every technique reads: the surface, its media (one spelling for all
+/// techniques), the lights, the services a technique may use (ray casting, a parallel loop,
+/// progress and cancel), and the points a frame shades.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -22,18 +22,20 @@
 
 namespace lucent::technique {
 
-/// A scalar field over the object, mm coordinates; multiplies sigma_a and sigma_s (1 = the material).
+/// A scalar field over the object, mm coordinates; multiplies sigma_a and sigma_s (1 = the
+/// material).
 using DensityField = std::function<double(const glm::dvec3&)>;
 
 /// A homogeneous material, optionally scaled by a density field (a scanned volume).
 struct Medium {
   optics::Material material;
-  DensityField density;             ///< empty: homogeneous
-  std::string densityDescription;   ///< where the field came from, for notes
+  DensityField density;            ///< empty: homogeneous
+  std::string densityDescription;  ///< where the field came from, for notes
   bool heterogeneous() const { return bool(density); }
 };
 
-/// A closed surface inside the object, filled with another medium (an inclusion; e.g. a tumour in tissue).
+/// A closed surface inside the object, filled with another medium (an inclusion; e.g. a tumour in
+/// tissue).
 struct Inclusion {
   scene::TriangleMesh surface;
   Medium medium;
@@ -41,7 +43,8 @@ struct Inclusion {
   std::string description;
 };
 
-using RayCasterFactory = std::function<std::unique_ptr<scene::RayCaster>(const scene::TriangleMesh&)>;
+using RayCasterFactory =
+    std::function<std::unique_ptr<scene::RayCaster>(const scene::TriangleMesh&)>;
 
 /// Progress of a named stage in [0, 1]; may be called from worker threads.
 using StageProgress = std::function<void(const std::string& stage, double fraction)>;
@@ -54,13 +57,13 @@ class Cancelled : public std::runtime_error {
 
 struct SceneDescription {
   std::string meshName;
-  scene::TriangleMesh mesh;                 ///< mm, closed, outward
+  scene::TriangleMesh mesh;  ///< mm, closed, outward
   std::vector<glm::vec3> vertexNormals;
-  Medium medium;                            ///< what the object is made of
-  std::vector<Inclusion> inclusions;        ///< nested bodies of other media
+  Medium medium;                      ///< what the object is made of
+  std::vector<Inclusion> inclusions;  ///< nested bodies of other media
   std::vector<scene::Light> lights;
-  const scene::RayCaster* caster = nullptr; ///< over `mesh`
-  RayCasterFactory makeRayCaster;           ///< for meshes a technique builds (node surfaces, media bodies)
+  const scene::RayCaster* caster = nullptr;  ///< over `mesh`
+  RayCasterFactory makeRayCaster;  ///< for meshes a technique builds (node surfaces, media bodies)
   util::ParallelFor parallelFor = util::serialFor;
   StageProgress progress;
   std::function<bool()> cancelRequested;
@@ -77,8 +80,8 @@ struct SceneDescription {
   }
 };
 
-/// The points a frame shades: surface points seen through pixels (with the camera, for techniques that
-/// trace camera rays), or a mesh's vertices.
+/// The points a frame shades: surface points seen through pixels (with the camera, for techniques
+/// that trace camera rays), or a mesh's vertices.
 struct ShadeRequest {
   std::vector<reference::ShadingPoint> points;
   const scene::PinholeCamera* camera = nullptr;  ///< set when the points are pixels' first hits
@@ -102,13 +105,14 @@ inline Requirements requirementsOf(const SceneDescription& scene, const ShadeReq
   return r;
 }
 
-/// Shading points at the mesh's vertices (each on one of its triangles, barycentrics at the vertex), seen
-/// head-on: the request of per-vertex front ends such as the VTK filter.
+/// Shading points at the mesh's vertices (each on one of its triangles, barycentrics at the
+/// vertex), seen head-on: the request of per-vertex front ends such as the VTK filter.
 inline ShadeRequest vertexRequest(const scene::TriangleMesh& mesh) {
   ShadeRequest r;
   r.vertices = true;
   r.points.resize(mesh.positions.size());
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i) r.points[i].position = glm::dvec3(mesh.positions[i]);
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+    r.points[i].position = glm::dvec3(mesh.positions[i]);
   for (std::size_t t = mesh.triangles.size(); t-- > 0;) {
     const auto& tri = mesh.triangles[t];
     const double bary[3][2] = {{0, 0}, {1, 0}, {0, 1}};
@@ -122,10 +126,12 @@ inline ShadeRequest vertexRequest(const scene::TriangleMesh& mesh) {
 }
 
 /// Shading points at the first hit through every pixel centre.
-inline ShadeRequest pixelRequest(const scene::PinholeCamera& camera, const SceneDescription& scene) {
+inline ShadeRequest pixelRequest(const scene::PinholeCamera& camera,
+                                 const SceneDescription& scene) {
   ShadeRequest r;
   r.camera = &camera;
-  const auto hits = reference::primaryHits(camera, scene.mesh, scene.vertexNormals, *scene.caster, scene.parallelFor);
+  const auto hits = reference::primaryHits(camera, scene.mesh, scene.vertexNormals, *scene.caster,
+                                           scene.parallelFor);
   for (std::size_t i = 0; i < hits.size(); ++i)
     if (hits[i]) {
       r.points.push_back(*hits[i]);

@@ -1,7 +1,8 @@
 #pragma once
 /// @file statistics.hpp
-/// @brief What a technique reports about its work, typed so the bench and the planner read it without
-/// knowing the technique: per-phase seconds, the samples its accuracy is bought with, bytes, extras.
+/// @brief What a technique reports about its work, typed so the bench and the planner read it
+/// without knowing the technique: per-phase seconds, the samples its accuracy is bought with,
+/// bytes, extras.
 #include <chrono>
 #include <map>
 #include <string>
@@ -23,12 +24,14 @@ class Stopwatch {
 };
 
 struct Statistics {
-  /// (phase, seconds) in the order run: prepare phases ("atlas", "samples", "graph") and frame phases
+  /// (phase, seconds) in the order run: prepare phases ("atlas", "samples", "graph") and frame
+  /// phases
   /// ("irradiance", "sampling", "evaluation", "solve").
   std::vector<std::pair<std::string, double>> prepareSeconds, frameSeconds;
-  double samples = 0;        ///< what the accuracy is bought with (surface samples, importance samples, paths)
-  std::string sampleUnit;    ///< what `samples` counts
-  double bytes = 0;          ///< memory of the prepared structures
+  double samples =
+      0;  ///< what the accuracy is bought with (surface samples, importance samples, paths)
+  std::string sampleUnit;                 ///< what `samples` counts
+  double bytes = 0;                       ///< memory of the prepared structures
   std::map<std::string, double> figures;  ///< technique-specific counts and measures
   std::vector<std::string> warnings;      ///< what a user must see (budget limits, clamped values)
 
@@ -45,8 +48,8 @@ struct Statistics {
     return timed(frameSeconds, phase, work);
   }
 
-  /// Every number as one flat map: "<phase>_seconds", "prepare_seconds", "frame_seconds", "samples",
-  /// "bytes", and the figures (what the CLI's stats JSON and the bench's table carry).
+  /// Every number as one flat map: "<phase>_seconds", "prepare_seconds", "frame_seconds",
+  /// "samples", "bytes", and the figures (what the CLI's stats JSON and the bench's table carry).
   std::map<std::string, double> flat() const {
     std::map<std::string, double> out = figures;
     for (const auto& [phase, s] : prepareSeconds) out[phase + "_seconds"] += s;
@@ -65,7 +68,8 @@ struct Statistics {
     return s;
   }
   template <class Work>
-  static auto timed(std::vector<std::pair<std::string, double>>& into, const std::string& phase, Work& work) {
+  static auto timed(std::vector<std::pair<std::string, double>>& into, const std::string& phase,
+                    Work& work) {
     const Stopwatch clock;
     if constexpr (std::is_void_v<decltype(work())>) {
       work();

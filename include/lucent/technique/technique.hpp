@@ -1,9 +1,10 @@
 #pragma once
 /// @file technique.hpp
-/// @brief One technique, described: name, summary, the paper and equations it implements, typed knobs,
-/// capabilities, the sweep that shows what its accuracy costs, and two phases: prepare(scene, knobs) builds
-/// what survives a change of light or material (samples, atlas, octree, graph); a frame shades the
-/// requested points. L = Ft B / pi is applied here, once, for every technique that computes radiosity B.
+/// @brief One technique, described: name, summary, the paper and equations it implements, typed
+/// knobs, capabilities, the sweep that shows what its accuracy costs, and two phases:
+/// prepare(scene, knobs) builds what survives a change of light or material (samples, atlas,
+/// octree, graph); a frame shades the requested points. L = Ft B / pi is applied here, once, for
+/// every technique that computes radiosity B.
 #include <atomic>
 #include <functional>
 #include <memory>
@@ -23,8 +24,8 @@ namespace lucent::technique {
 struct FrameResult {
   std::vector<glm::dvec3> radiance;   ///< leaving the surface towards the viewer
   std::vector<glm::dvec3> radiosity;  ///< B (dipole-family techniques); radiance follows from it
-  /// Further per-point values (e.g. "stderr", the path tracer's standard error), each named after the
-  /// OutputFile knob that asks a front end to write it.
+  /// Further per-point values (e.g. "stderr", the path tracer's standard error), each named after
+  /// the OutputFile knob that asks a front end to write it.
   std::vector<std::pair<std::string, std::vector<glm::dvec3>>> extras;
 };
 
@@ -33,7 +34,8 @@ class Prepared {
  public:
   virtual ~Prepared() = default;
   /// Shades the request under the scene's current lights and material; adds its phases to `stats`.
-  virtual FrameResult frame(const SceneDescription& scene, const ShadeRequest& request, Statistics& stats) = 0;
+  virtual FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
+                            Statistics& stats) = 0;
 };
 
 /// Values of one knob for the bench's default sweep.
@@ -51,8 +53,10 @@ struct Technique {
   std::vector<KnobSpec> knobs;
   Capabilities capabilities;
   std::vector<Sweep> defaultSweep;  ///< what `lucent bench` sweeps when no --sweep is given
-  KnobList referenceKnobs;          ///< the knobs of a converged result, when this technique is the reference
-  std::function<std::unique_ptr<Prepared>(const SceneDescription&, const KnobValues&, Statistics&)> prepare;
+  KnobList
+      referenceKnobs;  ///< the knobs of a converged result, when this technique is the reference
+  std::function<std::unique_ptr<Prepared>(const SceneDescription&, const KnobValues&, Statistics&)>
+      prepare;
 
   KnobValues values(const KnobList& given = {}) const { return KnobValues(knobs, given, name); }
   const KnobSpec* knob(const std::string& knobName) const {
@@ -62,8 +66,8 @@ struct Technique {
   }
 };
 
-/// L(x_o, w_o) = Ft(eta, w_o) B(x_o) / pi (texture-space-importance-sampling Eq. 2; Jensen et al. 2001's
-/// diffuse exitance through the boundary), with the exact dielectric Fresnel term.
+/// L(x_o, w_o) = Ft(eta, w_o) B(x_o) / pi (texture-space-importance-sampling Eq. 2; Jensen et al.
+/// 2001's diffuse exitance through the boundary), with the exact dielectric Fresnel term.
 inline glm::dvec3 exitRadiance(const glm::dvec3& radiosity, double cosOut, double eta) {
   return radiosity * (optics::fresnelTransmittance(cosOut, eta) / optics::kPi);
 }
@@ -78,8 +82,8 @@ inline void completeRadiance(FrameResult& frame, const ShadeRequest& request, do
 
 /// B at every request point from a radiosity evaluator, in parallel, with progress.
 template <class Radiosity>
-std::vector<glm::dvec3> radiosityAt(const Radiosity& eval, const SceneDescription& scene, const ShadeRequest& request,
-                                    const std::string& stage) {
+std::vector<glm::dvec3> radiosityAt(const Radiosity& eval, const SceneDescription& scene,
+                                    const ShadeRequest& request, const std::string& stage) {
   std::vector<glm::dvec3> b(request.points.size());
   const util::Progress progress = scene.stage(stage);
   std::atomic<std::size_t> done{0};

@@ -1,9 +1,10 @@
 #pragma once
 /// @file texture_space.hpp
-/// @brief The techniques of texture-space-importance-sampling: tsis (Sec. 2-3), hybrid (Sec. 4: local
-/// Rd Wl by translucent shadow maps + global Rd Wg by tsis) and tsm (the ring filter over all of Rd).
-/// Prepare is the parameterization (once per mesh); a frame is what the paper's run time redoes when
-/// light or material change: irradiance into the atlas, sampling, shadow maps, evaluation.
+/// @brief The techniques of texture-space-importance-sampling: tsis (Sec. 2-3), hybrid (Sec. 4:
+/// local Rd Wl by translucent shadow maps + global Rd Wg by tsis) and tsm (the ring filter over all
+/// of Rd). Prepare is the parameterization (once per mesh); a frame is what the paper's run time
+/// redoes when light or material change: irradiance into the atlas, sampling, shadow maps,
+/// evaluation.
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,29 +23,38 @@ namespace lucent::technique {
 namespace detail {
 
 inline std::vector<KnobSpec> atlasKnobs() {
-  return {KnobSpec::integer("atlas", 1024, 16, 8192, "atlas resolution (texels per side)", Phase::Prepare),
+  return {KnobSpec::integer("atlas", 1024, 16, 8192, "atlas resolution (texels per side)",
+                            Phase::Prepare),
           KnobSpec::real("chart-angle", "40", 1, 80, "degrees",
-                         "chart cone half-angle (smaller: more charts, less distortion)", Phase::Prepare)};
+                         "chart cone half-angle (smaller: more charts, less distortion)",
+                         Phase::Prepare)};
 }
 
 inline std::vector<KnobSpec> samplingKnobs(long long samples) {
-  return {KnobSpec::integer("samples", samples, 1, 10000000, "importance samples N drawn over the atlas (Eq. 10)"),
+  return {KnobSpec::integer("samples", samples, 1, 10000000,
+                            "importance samples N drawn over the atlas (Eq. 10)"),
           KnobSpec::choice("sampler", {"mip", "row"}, "texel ICDF: mip (Fig. 2b) or row (Fig. 2a)"),
-          KnobSpec::choice("pattern", {"stratified", "independent"},
-                           "2-D input points: stratified (Hammersley, shifted) or independent (as the paper)"),
+          KnobSpec::choice(
+              "pattern", {"stratified", "independent"},
+              "2-D input points: stratified (Hammersley, shifted) or independent (as the paper)"),
           KnobSpec::integer("seed", 1, 0, 1000000000000000LL, "random seed")};
 }
 
 inline std::vector<KnobSpec> ringKnobs() {
-  return {KnobSpec::integer("rings", 20, 1, 1000, "concentric rings L of the local filter (Sec. 4.2)"),
-          KnobSpec::integer("ring-samples", 20, 1, 1000, "samples C per ring (the filter has L*C+1 samples)"),
-          KnobSpec::integer("map", 512, 8, 8192, "translucent shadow map resolution (texels per side)")};
+  return {
+      KnobSpec::integer("rings", 20, 1, 1000, "concentric rings L of the local filter (Sec. 4.2)"),
+      KnobSpec::integer("ring-samples", 20, 1, 1000,
+                        "samples C per ring (the filter has L*C+1 samples)"),
+      KnobSpec::integer("map", 512, 8, 8192,
+                        "translucent shadow map resolution (texels per side)")};
 }
 
 inline std::vector<KnobSpec> evaluationKnobs() {
-  return {KnobSpec::choice("eval", {"pixel", "vertex"},
-                           "where Eq. 11 is summed: pixel (every shaded point) or vertex (interpolated B)"),
-          KnobSpec::integer("env-strata", 16, 1, 256, "environment light: strata x strata directions per irradiance texel")};
+  return {KnobSpec::choice(
+              "eval", {"pixel", "vertex"},
+              "where Eq. 11 is summed: pixel (every shaded point) or vertex (interpolated B)"),
+          KnobSpec::integer("env-strata", 16, 1, 256,
+                            "environment light: strata x strata directions per irradiance texel")};
 }
 
 template <class... Lists>
@@ -54,7 +64,8 @@ std::vector<KnobSpec> concat(Lists... lists) {
   return out;
 }
 
-inline scene::IrradianceSettings irradianceSettings(const SceneDescription& scene, const KnobValues& knobs) {
+inline scene::IrradianceSettings irradianceSettings(const SceneDescription& scene,
+                                                    const KnobValues& knobs) {
   scene::IrradianceSettings irr;
   irr.eta = scene.medium.material.eta;
   irr.rayEpsilon = scene.rayEpsilon();
@@ -67,7 +78,8 @@ inline optics::Dipole<double> dipoleOf(const optics::Material& m) {
 }
 
 /// The chart atlas (prepare).
-inline atlas::TextureAtlas buildAtlas(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats) {
+inline atlas::TextureAtlas buildAtlas(const SceneDescription& scene, const KnobValues& knobs,
+                                      Statistics& stats) {
   atlas::AtlasOptions ao;
   ao.resolution = int(knobs.integer("atlas"));
   ao.maxNormalAngleDeg = knobs.real("chart-angle");
@@ -89,59 +101,72 @@ inline atlas::TextureAtlas buildAtlas(const SceneDescription& scene, const KnobV
 }
 
 /// Irradiance into the atlas and the N importance samples (a frame's first stages).
-inline atlas::ImportanceSamples drawSamples(const atlas::TextureAtlas& a, const SceneDescription& scene,
-                                            const KnobValues& knobs, Statistics& stats) {
+inline atlas::ImportanceSamples drawSamples(const atlas::TextureAtlas& a,
+                                            const SceneDescription& scene, const KnobValues& knobs,
+                                            Statistics& stats) {
   const auto irradiance = stats.timeFrame("irradiance", [&] {
-    return atlas::renderIrradianceAtlas(a, scene.mesh, scene.vertexNormals, scene.lights, *scene.caster,
-                                        irradianceSettings(scene, knobs), scene.parallelFor,
-                                        scene.stage("irradiance atlas"));
+    return atlas::renderIrradianceAtlas(a, scene.mesh, scene.vertexNormals, scene.lights,
+                                        *scene.caster, irradianceSettings(scene, knobs),
+                                        scene.parallelFor, scene.stage("irradiance atlas"));
   });
-  stats.figures["transmitted_power"] = irradiance.totalPower.x + irradiance.totalPower.y + irradiance.totalPower.z;
+  stats.figures["transmitted_power"] =
+      irradiance.totalPower.x + irradiance.totalPower.y + irradiance.totalPower.z;
   scene.checkCancelled();
   atlas::SamplingOptions so;
   so.samples = int(knobs.integer("samples"));
-  so.sampler = knobs.pick<atlas::TexelSampler>("sampler", {{"mip", atlas::TexelSampler::Mipmap},
-                                                           {"row", atlas::TexelSampler::RowMajor}});
+  so.sampler = knobs.pick<atlas::TexelSampler>(
+      "sampler", {{"mip", atlas::TexelSampler::Mipmap}, {"row", atlas::TexelSampler::RowMajor}});
   so.pattern = knobs.pick<atlas::SamplePattern>(
-      "pattern", {{"stratified", atlas::SamplePattern::Stratified}, {"independent", atlas::SamplePattern::Independent}});
+      "pattern", {{"stratified", atlas::SamplePattern::Stratified},
+                  {"independent", atlas::SamplePattern::Independent}});
   so.seed = std::uint64_t(knobs.integer("seed"));
-  auto samples = stats.timeFrame("sampling", [&] { return atlas::drawImportanceSamples(irradiance, so); });
+  auto samples =
+      stats.timeFrame("sampling", [&] { return atlas::drawImportanceSamples(irradiance, so); });
   stats.samples = double(samples.size());
   stats.sampleUnit = "importance samples";
-  if (samples.size() == 0) stats.warnings.push_back("no light reaches the surface: the image is black");
+  if (samples.size() == 0)
+    stats.warnings.push_back("no light reaches the surface: the image is black");
   return samples;
 }
 
 /// B at the request's points, summed there (eval=pixel) or at the mesh's vertices and interpolated.
 template <class Radiosity>
-std::vector<glm::dvec3> evaluate(const Radiosity& eval, const SceneDescription& scene, const ShadeRequest& request,
-                                 const KnobValues& knobs, Statistics& stats) {
+std::vector<glm::dvec3> evaluate(const Radiosity& eval, const SceneDescription& scene,
+                                 const ShadeRequest& request, const KnobValues& knobs,
+                                 Statistics& stats) {
   const bool perVertex = knobs.pick<bool>("eval", {{"pixel", false}, {"vertex", true}});
   return stats.timeFrame("evaluation", [&] {
-    if (!perVertex || request.vertices) return radiosityAt(eval, scene, request, "Eq. 11 per point");
-    const std::vector<glm::dvec3> atVertices = radiosityAt(eval, scene, vertexRequest(scene.mesh), "Eq. 11 per vertex");
+    if (!perVertex || request.vertices)
+      return radiosityAt(eval, scene, request, "Eq. 11 per point");
+    const std::vector<glm::dvec3> atVertices =
+        radiosityAt(eval, scene, vertexRequest(scene.mesh), "Eq. 11 per vertex");
     std::vector<glm::dvec3> b(request.points.size());
-    for (std::size_t i = 0; i < b.size(); ++i) b[i] = reference::interpolateAtHit(scene.mesh, atVertices, request.points[i]);
+    for (std::size_t i = 0; i < b.size(); ++i)
+      b[i] = reference::interpolateAtHit(scene.mesh, atVertices, request.points[i]);
     return b;
   });
 }
 
 /// One translucent shadow map per light (hybrid, tsm).
-inline std::vector<atlas::TranslucentShadowMap> shadowMaps(const SceneDescription& scene, const KnobValues& knobs,
+inline std::vector<atlas::TranslucentShadowMap> shadowMaps(const SceneDescription& scene,
+                                                           const KnobValues& knobs,
                                                            Statistics& stats) {
   return stats.timeFrame("shadow_map", [&] {
     std::vector<atlas::TranslucentShadowMap> maps;
     for (const auto& light : scene.lights)
-      maps.emplace_back(light, scene.mesh, scene.vertexNormals, *scene.caster, irradianceSettings(scene, knobs),
-                        int(knobs.integer("map")), scene.parallelFor);
+      maps.emplace_back(light, scene.mesh, scene.vertexNormals, *scene.caster,
+                        irradianceSettings(scene, knobs), int(knobs.integer("map")),
+                        scene.parallelFor);
     return maps;
   });
 }
 
 template <class Profile>
-atlas::RingFilter ringFilter(const Profile& profile, const KnobValues& knobs, double diag, Statistics& stats) {
-  auto ring = atlas::makeRingFilter([&](double r) { return glm::dvec3(profile(float(r))); },
-                                    int(knobs.integer("rings")), int(knobs.integer("ring-samples")), diag);
+atlas::RingFilter ringFilter(const Profile& profile, const KnobValues& knobs, double diag,
+                             Statistics& stats) {
+  auto ring =
+      atlas::makeRingFilter([&](double r) { return glm::dvec3(profile(float(r))); },
+                            int(knobs.integer("rings")), int(knobs.integer("ring-samples")), diag);
   stats.figures["local_filter_samples"] = ring.sampleCount();
   stats.figures["local_filter_radius_mm"] = ring.outerRadius;
   return ring;
@@ -151,11 +176,12 @@ class Tsis final : public Prepared {
  public:
   Tsis(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats)
       : mKnobs(knobs), mAtlas(buildAtlas(scene, knobs, stats)) {}
-  FrameResult frame(const SceneDescription& scene, const ShadeRequest& request, Statistics& stats) override {
+  FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
+                    Statistics& stats) override {
     atlas::ImportanceSamples samples = drawSamples(mAtlas, scene, mKnobs, stats);
     const auto& m = scene.medium.material;
-    const auto dipole = optics::Dipole<float>::make(optics::Rgb<float>(m.sigmaA), optics::Rgb<float>(m.sigmaSPrime),
-                                                    float(m.eta));
+    const auto dipole = optics::Dipole<float>::make(
+        optics::Rgb<float>(m.sigmaA), optics::Rgb<float>(m.sigmaSPrime), float(m.eta));
     std::optional<atlas::TsisEvaluator> eval;
     if (mKnobs.pick<bool>("rd", {{"table", false}, {"exact", true}})) {
       eval.emplace(std::move(samples), dipole);
@@ -178,7 +204,8 @@ class Hybrid final : public Prepared {
  public:
   Hybrid(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats)
       : mKnobs(knobs), mAtlas(buildAtlas(scene, knobs, stats)) {}
-  FrameResult frame(const SceneDescription& scene, const ShadeRequest& request, Statistics& stats) override {
+  FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
+                    Statistics& stats) override {
     const auto dipole = dipoleOf(scene.medium.material);
     const double diag = scene.mesh.bounds().diagonal();
     const double rp = atlas::hybridRp(dipole, mKnobs.real("c"));
@@ -186,8 +213,10 @@ class Hybrid final : public Prepared {
     stats.figures["rp_mm"] = rp;
     auto ring = ringFilter(profiles.local, mKnobs, diag, stats);
     const float eta = float(scene.medium.material.eta);
-    const atlas::LocalTermEvaluator local(shadowMaps(scene, mKnobs, stats), std::move(ring), profiles.local, eta);
-    const atlas::TsisEvaluator global(drawSamples(mAtlas, scene, mKnobs, stats), profiles.global, eta);
+    const atlas::LocalTermEvaluator local(shadowMaps(scene, mKnobs, stats), std::move(ring),
+                                          profiles.local, eta);
+    const atlas::TsisEvaluator global(drawSamples(mAtlas, scene, mKnobs, stats), profiles.global,
+                                      eta);
     FrameResult out;
     out.radiosity = evaluate(atlas::HybridEvaluator(local, global), scene, request, mKnobs, stats);
     return out;
@@ -201,16 +230,17 @@ class Hybrid final : public Prepared {
 class Tsm final : public Prepared {
  public:
   explicit Tsm(const KnobValues& knobs) : mKnobs(knobs) {}
-  FrameResult frame(const SceneDescription& scene, const ShadeRequest& request, Statistics& stats) override {
+  FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
+                    Statistics& stats) override {
     const auto dipole = dipoleOf(scene.medium.material);
     const double diag = scene.mesh.bounds().diagonal();
-    const optics::RadialTable<float> profile([&](float r) { return optics::Rgb<float>(dipole.rd(double(r))); },
-                                             float(diag));
+    const optics::RadialTable<float> profile(
+        [&](float r) { return optics::Rgb<float>(dipole.rd(double(r))); }, float(diag));
     auto ring = ringFilter(profile, mKnobs, diag, stats);
     stats.samples = stats.figures["local_filter_samples"];
     stats.sampleUnit = "ring filter samples";
-    const atlas::LocalTermEvaluator local(shadowMaps(scene, mKnobs, stats), std::move(ring), profile,
-                                          float(scene.medium.material.eta));
+    const atlas::LocalTermEvaluator local(shadowMaps(scene, mKnobs, stats), std::move(ring),
+                                          profile, float(scene.medium.material.eta));
     FrameResult out;
     out.radiosity = evaluate(local, scene, request, mKnobs, stats);
     return out;
@@ -232,12 +262,17 @@ inline Capabilities textureSpaceCapabilities() {
 inline Technique tsisTechnique() {
   Technique t;
   t.name = "tsis";
-  t.summary = "texture-space importance sampling: N samples drawn over the atlas by irradiance, Eq. 11";
-  t.paper = "Mertens, Kautz, Bekaert, Van Reeth, Seidel 2003, texture-space-importance-sampling Sec. 3, Eq. 4-11";
-  t.knobs = detail::concat(detail::samplingKnobs(1600), detail::atlasKnobs(),
-                           std::vector<KnobSpec>{KnobSpec::choice(
-                               "rd", {"table", "exact"}, "Rd lookup: table (1-D texture, Sec. 3) or exact (the truth's kernel)")},
-                           detail::evaluationKnobs());
+  t.summary =
+      "texture-space importance sampling: N samples drawn over the atlas by irradiance, Eq. 11";
+  t.paper =
+      "Mertens, Kautz, Bekaert, Van Reeth, Seidel 2003, texture-space-importance-sampling Sec. 3, "
+      "Eq. 4-11";
+  t.knobs =
+      detail::concat(detail::samplingKnobs(1600), detail::atlasKnobs(),
+                     std::vector<KnobSpec>{KnobSpec::choice(
+                         "rd", {"table", "exact"},
+                         "Rd lookup: table (1-D texture, Sec. 3) or exact (the truth's kernel)")},
+                     detail::evaluationKnobs());
   t.capabilities = detail::textureSpaceCapabilities();
   t.capabilities.gpuTwin = "vtkLucentPass";
   t.defaultSweep = {{"samples", {"400", "1600", "6400"}}};
@@ -250,14 +285,17 @@ inline Technique tsisTechnique() {
 inline Technique hybridTechnique() {
   Technique t;
   t.name = "hybrid";
-  t.summary = "hybrid: local Rd Wl by a translucent shadow map ring filter + global Rd Wg by tsis (Sec. 4)";
+  t.summary =
+      "hybrid: local Rd Wl by a translucent shadow map ring filter + global Rd Wg by tsis (Sec. 4)";
   t.paper = "Mertens et al. 2003, texture-space-importance-sampling Sec. 4, Eq. 12-14";
   t.knobs = detail::concat(
       detail::samplingKnobs(900), detail::atlasKnobs(), detail::ringKnobs(),
       std::vector<KnobSpec>{
-          KnobSpec::real("c", "0.05", 0, kUnbounded, "mm^-1", "importance bound c: Rp is where Rd(r) 2 pi r falls to c (Fig. 4)",
+          KnobSpec::real("c", "0.05", 0, kUnbounded, "mm^-1",
+                         "importance bound c: Rp is where Rd(r) 2 pi r falls to c (Fig. 4)",
                          Phase::Frame, true),
-          KnobSpec::real("K", "1.5", 0, kUnbounded, "mm^-1", "steepness of the local/global weights Wl, Wg", Phase::Frame, true)},
+          KnobSpec::real("K", "1.5", 0, kUnbounded, "mm^-1",
+                         "steepness of the local/global weights Wl, Wg", Phase::Frame, true)},
       detail::evaluationKnobs());
   t.capabilities = detail::textureSpaceCapabilities();
   t.capabilities.environmentLights = false;  // a translucent shadow map needs a light view
@@ -271,8 +309,12 @@ inline Technique hybridTechnique() {
 inline Technique tsmTechnique() {
   Technique t;
   t.name = "tsm";
-  t.summary = "translucent shadow map: the ring filter over the light's view applied to all of Rd (local only)";
-  t.paper = "Dachsbacher, Stamminger 2003, Translucent Shadow Maps; as the local filter of texture-space-importance-sampling Sec. 4.2";
+  t.summary =
+      "translucent shadow map: the ring filter over the light's view applied to all of Rd (local "
+      "only)";
+  t.paper =
+      "Dachsbacher, Stamminger 2003, Translucent Shadow Maps; as the local filter of "
+      "texture-space-importance-sampling Sec. 4.2";
   t.knobs = detail::concat(detail::ringKnobs(), detail::evaluationKnobs());
   t.capabilities = detail::textureSpaceCapabilities();
   t.capabilities.environmentLights = false;
