@@ -1,8 +1,10 @@
 #pragma once
-// A fresh temporary folder per test, removed afterwards.
+// A fresh temporary folder per test, removed afterwards; and reading back what a test wrote into it.
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 namespace lucent::test {
@@ -24,5 +26,13 @@ struct TempDir {
     return n;
   }
 };
+
+/// The whole file as text (empty when it cannot be read).
+inline std::string slurp(const std::string& path) {
+  std::ifstream f(path);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
 
 }  // namespace lucent::test

@@ -21,12 +21,7 @@ struct Run {
   std::string out, err;
 };
 
-std::string slurp(const std::string& path) {
-  std::ifstream f(path);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
+using lucent::test::slurp;
 
 Run lucentCli(const std::string& args, const lucent::test::TempDir& dir) {
   const std::string out = dir / "stdout.txt", err = dir / "stderr.txt";

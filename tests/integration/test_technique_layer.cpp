@@ -63,12 +63,7 @@ struct CliRun {
   std::string out, err;
 };
 
-std::string slurp(const std::string& path) {
-  std::ifstream f(path);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
+using lucent::test::slurp;
 
 /// Runs the CLI in this process (so it sees the test's registry), capturing stdout and stderr.
 CliRun runCli(const std::vector<std::string>& words, const test::TempDir& dir) {
