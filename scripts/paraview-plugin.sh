@@ -15,5 +15,11 @@ scripts/lib/apt-install-missing.sh paraview paraview-dev python3-paraview \
 cmake --build build-paraview -j"$(nproc)"
 plugin=build-paraview/lib/paraview-plugins/LucentPlugin/LucentPlugin.so
 mkdir -p build-paraview/screenshots
-xvfb-run -a pvbatch tests/paraview/test_lucent_plugin.py "$plugin" build-paraview/screenshots
+# The registry as the CLI prints it: the plugin test checks the generated properties against it.
+techniques=()
+if [ -x build/lucent ]; then
+  build/lucent techniques --json > build-paraview/techniques.json
+  techniques=(build-paraview/techniques.json)
+fi
+xvfb-run -a pvbatch tests/paraview/test_lucent_plugin.py "$plugin" build-paraview/screenshots "${techniques[@]}"
 xvfb-run -a pvbatch examples/paraview_translucent.py "$plugin" build-paraview/screenshots/example.png

@@ -77,7 +77,8 @@ std::string techniqueJson(const technique::Technique& t) {
   o.add("name", t.name)
       .add("vtk_name", technique::camelCase(t.name))
       .add("summary", t.summary)
-      .add("paper", t.paper);
+      .add("paper", t.paper)
+      .add("requires", t.requires);
   return o.add("capabilities", caps)
       .raw("knobs", jsonList(knobs))
       .raw("default_sweep", jsonList(sweep))
@@ -85,7 +86,9 @@ std::string techniqueJson(const technique::Technique& t) {
 }
 
 std::string techniqueText(const technique::Technique& t) {
-  std::string s = t.name + ": " + t.summary + "\n  paper: " + t.paper + "\n  can:";
+  std::string s = t.name + ": " + t.summary + "\n  paper: " + t.paper + "\n";
+  if (!t.requires.empty()) s += "  requires: " + t.requires + "\n";
+  s += "  can:";
   for (const auto& [name, value] : flags(t.capabilities))
     if (value) s += std::string(" ") + name;
   s += "\n  cannot:";

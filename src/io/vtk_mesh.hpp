@@ -9,7 +9,8 @@ class vtkPolyData;
 
 namespace lucent::io {
 
-/// Triangulates polygons and strips, merges coincident points, drops lines and vertices.
+/// Triangulates polygons and strips, welds coincident points, drops lines and vertices, turns an
+/// inside-out mesh outward: vtk_plugin/Common/lucentPolyDataMesh.h, shared with the VTK modules.
 scene::TriangleMesh fromPolyData(vtkPolyData* polyData);
 vtkSmartPointer<vtkPolyData> toPolyData(const scene::TriangleMesh& mesh);
 

@@ -182,6 +182,7 @@ Technique quadgraphTechnique() {
   t.paper =
       "quadgraph-diffusion, Eq. 1-2 (diffusion), Eq. 5-9 (graph stencil and relaxation), Eq. 7 "
       "(exitance), Sec. 4.3";
+  t.requires = "TetGen (AGPL-3.0, src/tetgen)";
   const Phase P = Phase::Prepare;
   t.knobs = {
       KnobSpec::real(

@@ -15,6 +15,8 @@
 #include <vtkTessellatedBoxSource.h>
 #include <vtkTriangleFilter.h>
 
+#include <lucent/technique/registry.hpp>
+
 #include "vtkLucentFilter.h"
 
 namespace {
@@ -40,7 +42,7 @@ TEST_CASE("vtkLucentFilter: a lit slab's face matches the dipole's total diffuse
   filter->SetMaterial("skin1");
   filter->SetLightDirection(0, 0, 1);
   filter->SetLightIrradiance(2.0);
-  filter->SetSampleFraction(1.0);
+  filter->SetKnob("reference.fraction", "1");
   int progressEvents = 0;
   vtkNew<vtkCallbackCommand> onProgress;
   onProgress->SetClientData(&progressEvents);
@@ -93,7 +95,7 @@ TEST_CASE("vtkLucentFilter: tiny, huge and eta-extreme inputs stay finite; bad i
     filter->SetInputConnection(sphere->GetOutputPort());
     filter->SetSizeMm(size);
     filter->SetMaterial(size < 1 ? "spectralon" : "ketchup");
-    filter->SetMaxSamples(20000);
+    filter->SetKnob("reference.max-samples", "20000");
     filter->Update();
     vtkDataArray* b = filter->GetOutput()->GetPointData()->GetArray("Radiosity");
     REQUIRE(b != nullptr);
@@ -128,14 +130,14 @@ TEST_CASE("vtkLucentFilter: the TSIS technique matches the reference per vertex 
   sphere->SetRadius(10);
   sphere->SetThetaResolution(48);
   sphere->SetPhiResolution(24);
-  auto run = [&](int technique, int samples) {
+  auto run = [&](const char* technique, int samples) {
     vtkNew<vtkLucentFilter> filter;
     filter->SetInputConnection(sphere->GetOutputPort());
     filter->SetMaterial("skin1");
     filter->SetLightDirection(1, 0.3, 0.4);
     filter->SetTechnique(technique);
-    filter->SetTsisSamples(samples);
-    filter->SetAtlasResolution(512);
+    filter->SetKnobInteger("tsis.samples", samples);
+    filter->SetKnobInteger("tsis.atlas", 512);
     filter->Update();
     vtkDataArray* b = filter->GetOutput()->GetPointData()->GetArray("Radiosity");
     REQUIRE(b != nullptr);
@@ -144,11 +146,11 @@ TEST_CASE("vtkLucentFilter: the TSIS technique matches the reference per vertex 
       for (int c = 0; c < 3; ++c) values[std::size_t(3 * i + c)] = b->GetComponent(i, c);
     return values;
   };
-  const auto reference = run(vtkLucentFilter::Reference, 0);
+  const auto reference = run("reference", 0);
   double error[2][3];
   const int counts[2] = {1024, 8192};
   for (int k = 0; k < 2; ++k) {
-    const auto tsis = run(vtkLucentFilter::TSIS, counts[k]);
+    const auto tsis = run("tsis", counts[k]);
     REQUIRE(tsis.size() == reference.size());
     for (int c = 0; c < 3; ++c) {
       double d2 = 0, r2 = 0;
@@ -163,4 +165,68 @@ TEST_CASE("vtkLucentFilter: the TSIS technique matches the reference per vertex 
   }
   for (int c = 0; c < 3; ++c) CHECK(error[1][c] < 0.05);
   CHECK(error[1][2] < error[0][2] / 1.4);
+}
+
+namespace {
+/// Radiance = level at every vertex: what the filter passes through can be checked exactly.
+lucent::technique::Technique vertexConstant() {
+  namespace lt = lucent::technique;
+  lt::Technique t;
+  t.name = "test-vertex-constant";
+  t.summary = "test only";
+  t.paper = "none";
+  t.knobs = {lt::KnobSpec::real("level", "0.5", 0, 1, "", "the radiance returned")};
+  t.defaultSweep = {{"level", {"0.5"}}};
+  struct Constant final : lt::Prepared {
+    double level;
+    explicit Constant(double v) : level(v) {}
+    lt::FrameResult frame(const lt::SceneDescription&, const lt::ShadeRequest& r, lt::Statistics&) override {
+      lt::FrameResult out;
+      out.radiance.assign(r.points.size(), glm::dvec3(level));
+      return out;
+    }
+  };
+  t.prepare = [](const lt::SceneDescription&, const lt::KnobValues& k, lt::Statistics&) {
+    return std::make_unique<Constant>(k.real("level"));
+  };
+  return t;
+}
+}  // namespace
+
+TEST_CASE("vtkLucentFilter: a technique registered by a test alone is offered, with its knob as a property") {
+  auto& registry = vtkLucentFilter::Techniques();
+  if (!registry.find("test-vertex-constant")) registry.add(vertexConstant());
+  std::vector<std::string> techniques, properties;
+  for (int i = 0; i < vtkLucentFilter::GetNumberOfTechniques(); ++i)
+    techniques.push_back(vtkLucentFilter::GetTechniqueName(i));
+  for (int i = 0; i < vtkLucentFilter::GetNumberOfKnobProperties(); ++i)
+    properties.push_back(vtkLucentFilter::GetKnobPropertyName(i));
+  auto has = [](const std::vector<std::string>& v, const std::string& x) {
+    return std::find(v.begin(), v.end(), x) != v.end();
+  };
+  CHECK(has(techniques, "test-vertex-constant"));
+  CHECK(has(techniques, "tsis"));
+  CHECK_FALSE(has(techniques, "pathtrace"));  // it needs a camera: not a per-vertex technique
+  CHECK(has(properties, "TestVertexConstantLevel"));
+  CHECK(has(properties, "TsisSamples"));
+  CHECK(has(properties, "HybridRingSamples"));
+
+  vtkNew<vtkSphereSource> sphere;
+  vtkNew<vtkLucentFilter> filter;
+  filter->SetInputConnection(sphere->GetOutputPort());
+  filter->SetTechnique("test-vertex-constant");
+  CHECK(filter->GetKnob("test-vertex-constant.level") == "0.5");
+  filter->SetKnobReal("test-vertex-constant.level", 0.25);
+  filter->Update();
+  vtkDataArray* radiance = filter->GetOutput()->GetPointData()->GetArray("Radiance");
+  REQUIRE(radiance != nullptr);
+  REQUIRE(radiance->GetNumberOfTuples() > 10);
+  for (vtkIdType i = 0; i < radiance->GetNumberOfTuples(); ++i) CHECK(radiance->GetComponent(i, 1) == doctest::Approx(0.25));
+  CHECK(filter->GetOutput()->GetPointData()->GetArray("Radiosity") == nullptr);  // it computes no B
+
+  // A value outside the knob's own range is an error before any work, and the output stays empty.
+  filter->SetKnob("test-vertex-constant.level", "3");
+  filter->GlobalWarningDisplayOff();
+  filter->Update();
+  CHECK(filter->GetOutput()->GetNumberOfPoints() == 0);
 }

@@ -1,9 +1,12 @@
 """The lucent plugin in Debian's ParaView 5.11, headless: pvbatch loads it, applies the Lucent Translucent
 filter and the Lucent Render View to built-in sources, saves screenshots and checks them.
 
-    xvfb-run -a pvbatch tests/paraview/test_lucent_plugin.py PLUGIN.so OUTDIR
-Prints 'lucent paraview plugin: OK' and exits 0, or names the failed check and exits 1.
+    xvfb-run -a pvbatch tests/paraview/test_lucent_plugin.py PLUGIN.so OUTDIR [TECHNIQUES.json]
+With TECHNIQUES.json (`lucent techniques --json`), it first checks that the filter's properties, generated at
+build time from the technique descriptions, are exactly the registry's knobs, with the same defaults, ranges
+and choices. Prints 'lucent paraview plugin: OK' and exits 0, or names the failed check and exits 1.
 """
+import json
 import math
 import os
 import sys
@@ -13,6 +16,7 @@ from paraview.simple import *  # noqa: F401,F403 (ParaView's scripting API)
 from vtkmodules.vtkIOImage import vtkPNGReader
 
 plugin, outdir = sys.argv[1], sys.argv[2]
+techniques_json = sys.argv[3] if len(sys.argv) > 3 else None
 os.makedirs(outdir, exist_ok=True)
 LoadPlugin(plugin, remote=False, ns=globals())
 
@@ -38,6 +42,83 @@ def place_camera(view):
     view.CameraViewUp = [0.0, 1.0, 0.0]
     view.ResetCamera(False)
 
+
+# 0. The generated properties against the registry, as the CLI prints it (`lucent techniques --json`).
+SCENE_PROPERTIES = {"Input", "Material", "SizeMm", "LightDirection", "LightIrradiance", "Exposure", "Technique"}
+
+
+def close(a, b):
+    return a == b or abs(a - b) <= 1e-9 * max(abs(a), abs(b))
+
+
+def check_knob_property(proxy, technique, knob):
+    name = technique["vtk_name"] + knob["vtk_name"]
+    prop = proxy.GetProperty(name)
+    if prop is None:
+        fail("the filter has no property %s for %s's knob %s" % (name, technique["name"], knob["name"]))
+    kind = knob["kind"]
+    if kind in ("integer", "real"):
+        if not close(float(prop.GetElement(0)), float(knob["default"])):
+            fail("%s default %s, the registry says %s" % (name, prop.GetElement(0), knob["default"]))
+        domain = prop.GetDomain("range")
+        if domain is None or not domain.GetMinimumExists(0) or not close(domain.GetMinimum(0), knob["min"]):
+            fail("%s: the range's minimum is not the registry's %s" % (name, knob["min"]))
+        if (knob["max"] is None) != (not domain.GetMaximumExists(0)):
+            fail("%s: the range's maximum disagrees with the registry's %s" % (name, knob["max"]))
+        if knob["max"] is not None and not close(domain.GetMaximum(0), knob["max"]):
+            fail("%s: maximum %s, the registry says %s" % (name, domain.GetMaximum(0), knob["max"]))
+    else:
+        if prop.GetElement(0) != knob["default"]:
+            fail("%s default '%s', the registry says '%s'" % (name, prop.GetElement(0), knob["default"]))
+    if kind == "choice":
+        domain = prop.GetDomain("list")
+        strings = [domain.GetString(i) for i in range(domain.GetNumberOfStrings())]
+        if strings != knob["choices"]:
+            fail("%s offers %s, the registry %s" % (name, strings, knob["choices"]))
+    return name
+
+
+def check_generated_properties(path):
+    registry = json.load(open(path))["techniques"]
+    # The filter holds the header-only techniques (an adapter's, such as quadgraph's TetGen, is not linked).
+    offered = [t for t in registry if t["capabilities"]["per_vertex"] and not t["capabilities"]["needs_camera"]
+               and not t["requires"]]
+    probe = LucentTranslucent(Input=Sphere())  # fresh: every property holds its XML default
+    proxy = probe.SMProxy
+    domain = proxy.GetProperty("Technique").GetDomain("list")
+    listed = [domain.GetString(i) for i in range(domain.GetNumberOfStrings())]
+    if listed != [t["name"] for t in offered]:
+        fail("the Technique property offers %s, the registry's per-vertex techniques are %s"
+             % (listed, [t["name"] for t in offered]))
+    expected = {check_knob_property(proxy, t, k) for t in offered for k in t["knobs"] if k["kind"] != "output-file"}
+    it = proxy.NewPropertyIterator()
+    it.Begin()
+    present = set()
+    while not it.IsAtEnd():
+        present.add(it.GetKey())
+        it.Next()
+    extra = present - expected - SCENE_PROPERTIES
+    if extra or expected - present:
+        fail("properties not in the registry: %s; registry knobs without a property: %s"
+             % (sorted(extra), sorted(expected - present)))
+    # The properties reach the filter's knobs by their qualified names (the XML's initial_string).
+    probe.Technique = "tsis"
+    probe.TsisSamples = 512
+    probe.TsisSampler = "row"
+    probe.TsisChartAngle = 30.0
+    probe.UpdatePipeline()
+    held = str(probe.GetClientSideObject())  # vtkLucentFilter::PrintSelf lists the knobs it holds
+    for knob, value in (("tsis.samples", "512"), ("tsis.sampler", "row"), ("tsis.chart-angle", "30")):
+        if "%s: %s\n" % (knob, value) not in held:
+            fail("the property for %s was set to %s, but the filter holds: %s" % (knob, value, held))
+    if probe.PointData["Radiosity"] is None:
+        fail("the tsis technique chosen through the properties gave no Radiosity")
+    Delete(probe)
+    print("generated properties: %d knobs of %d techniques, equal to the registry" % (len(expected), len(offered)))
+
+
+if techniques_json:
+    check_generated_properties(techniques_json)
 
 # 1. The filter (runs where the data is, on pvserver too): per-vertex Radiosity, finite, lit side bright.
 sphere = Sphere(Radius=0.5, ThetaResolution=64, PhiResolution=32)

@@ -2,41 +2,90 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
-#include <memory>
+#include <thread>
 #include <vector>
 
-#include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
-#include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSMPTools.h>
-#include <vtkTriangleFilter.h>
 #include <vtkUnsignedCharArray.h>
 
-#include <lucent/atlas/importance_samples.hpp>
-#include <lucent/atlas/irradiance_atlas.hpp>
-#include <lucent/atlas/texture_atlas.hpp>
-#include <lucent/atlas/tsis_evaluator.hpp>
 #include <lucent/image/display_encode.hpp>
-#include <lucent/optics/dipole.hpp>
 #include <lucent/optics/materials.hpp>
-#include <lucent/reference/dipole_truth.hpp>
+#include <lucent/technique/core_techniques.hpp>
 
+#include "lucentPolyDataMesh.h"
 #include "vtkLucentRayCaster.h"
 
 vtkStandardNewMacro(vtkLucentFilter);
 
 namespace {
+namespace lt = lucent::technique;
+
+/// The offered techniques (those that shade vertices without a camera), in registry order.
+std::vector<const lt::Technique*> offered() {
+  std::vector<const lt::Technique*> out;
+  for (const auto& t : vtkLucentFilter::Techniques().all())
+    if (lt::shadesVertices(t)) out.push_back(&t);
+  return out;
+}
+
+/// (property name, qualified name) of every knob property of the offered techniques.
+std::vector<std::pair<std::string, std::string>> knobProperties() {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const lt::Technique* t : offered())
+    for (const auto& k : t->knobs)
+      if (lt::isProperty(k)) out.emplace_back(lt::propertyName(*t, k), lt::qualifiedName(*t, k));
+  return out;
+}
+
 unsigned char displayByte(double x) {
   return static_cast<unsigned char>(std::lround(255 * lucent::image::displayEncode(x)));
 }
+
+/// vtkSMPTools as the technique layer's parallel loop.
+void smpFor(std::size_t n, const lucent::util::RangeBody& body) {
+  vtkSMPTools::For(vtkIdType(0), vtkIdType(n), [&](vtkIdType begin, vtkIdType end) {
+    body(std::size_t(begin), std::size_t(end));
+  });
+}
+
+vtkSmartPointer<vtkFloatArray> tupleArray(const char* name, const std::vector<glm::dvec3>& values) {
+  auto a = vtkSmartPointer<vtkFloatArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(3);
+  a->SetNumberOfTuples(vtkIdType(values.size()));
+  for (std::size_t i = 0; i < values.size(); ++i)
+    for (int c = 0; c < 3; ++c) a->SetTypedComponent(vtkIdType(i), c, float(values[i][c]));
+  return a;
+}
+
+vtkSmartPointer<vtkUnsignedCharArray> colourArray(const std::vector<glm::dvec3>& values,
+                                                  double exposure) {
+  auto a = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  a->SetName("TranslucentColor");
+  a->SetNumberOfComponents(3);
+  a->SetNumberOfTuples(vtkIdType(values.size()));
+  for (std::size_t i = 0; i < values.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      a->SetTypedComponent(vtkIdType(i), c, displayByte(exposure * values[i][c]));
+  return a;
+}
 }  // namespace
+
+lt::Registry& vtkLucentFilter::Techniques() {
+  static lt::Registry registry = [] {
+    lt::Registry r;
+    lt::addCoreTechniques(r);
+    return r;
+  }();
+  return registry;
+}
 
 vtkLucentFilter::vtkLucentFilter() = default;
 
@@ -47,151 +96,161 @@ void vtkLucentFilter::SetMaterial(const char* name) {
   this->Modified();
 }
 
+void vtkLucentFilter::SetTechnique(const char* name) {
+  const std::string value = name ? name : "";
+  if (value == this->Technique) return;
+  this->Technique = value;
+  this->Modified();
+}
+
+int vtkLucentFilter::GetNumberOfTechniques() { return int(offered().size()); }
+std::string vtkLucentFilter::GetTechniqueName(int i) {
+  const auto all = offered();
+  return i >= 0 && i < int(all.size()) ? all[std::size_t(i)]->name : std::string();
+}
+
+void vtkLucentFilter::SetKnob(const char* qualifiedName, const char* value) {
+  if (!qualifiedName) return;
+  const std::string v = value ? value : "";
+  auto [it, added] = this->Knobs.emplace(qualifiedName, v);
+  if (!added && it->second == v) return;
+  it->second = v;
+  this->Modified();
+}
+void vtkLucentFilter::SetKnobInteger(const char* qualifiedName, int value) {
+  this->SetKnob(qualifiedName, std::to_string(value).c_str());
+}
+void vtkLucentFilter::SetKnobReal(const char* qualifiedName, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  this->SetKnob(qualifiedName, text);
+}
+
+std::string vtkLucentFilter::GetKnob(const char* qualifiedName) const {
+  if (!qualifiedName) return {};
+  if (const auto it = this->Knobs.find(qualifiedName); it != this->Knobs.end()) return it->second;
+  for (const lt::Technique* t : offered())
+    for (const auto& k : t->knobs)
+      if (lt::qualifiedName(*t, k) == qualifiedName) return k.defaultValue;
+  return {};
+}
+
+int vtkLucentFilter::GetNumberOfKnobProperties() { return int(knobProperties().size()); }
+std::string vtkLucentFilter::GetKnobPropertyName(int i) {
+  const auto all = knobProperties();
+  return i >= 0 && i < int(all.size()) ? all[std::size_t(i)].first : std::string();
+}
+std::string vtkLucentFilter::GetKnobQualifiedName(int i) {
+  const auto all = knobProperties();
+  return i >= 0 && i < int(all.size()) ? all[std::size_t(i)].second : std::string();
+}
+
 void vtkLucentFilter::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Material: " << this->Material << "\n"
-     << indent << "Technique: " << (this->Technique == TSIS ? "TSIS" : "Reference") << "\n"
-     << indent << "TsisSamples: " << this->TsisSamples << "\n"
-     << indent << "AtlasResolution: " << this->AtlasResolution << "\n"
+     << indent << "Technique: " << this->Technique << "\n"
      << indent << "SizeMm: " << this->SizeMm << "\n"
-     << indent << "LightDirection: " << this->LightDirection[0] << " " << this->LightDirection[1] << " "
-     << this->LightDirection[2] << "\n"
+     << indent << "LightDirection: " << this->LightDirection[0] << " " << this->LightDirection[1]
+     << " " << this->LightDirection[2] << "\n"
      << indent << "LightIrradiance: " << this->LightIrradiance << "\n"
-     << indent << "SampleFraction: " << this->SampleFraction << "\n"
-     << indent << "MaxSamples: " << this->MaxSamples << "\n"
      << indent << "Exposure: " << this->Exposure << "\n";
+  for (const auto& [name, value] : this->Knobs) os << indent << name << ": " << value << "\n";
 }
 
-int vtkLucentFilter::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector) {
+int vtkLucentFilter::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                 vtkInformationVector* outputVector) {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   if (!input || !output) return 0;
+  try {
+    // Everything the request asks for is checked before any work.
+    const auto material = lucent::optics::findMaterial(this->Material);
+    if (!material)
+      throw lt::RequestError(
+          "Material '" + this->Material +
+          "' is not a measured material; use one of: " + lucent::optics::measuredMaterialNames());
+    const lt::Technique& technique = Techniques().get(this->Technique);
+    if (!lt::shadesVertices(technique))
+      throw lt::RequestError(
+          "technique '" + technique.name + "' does not shade vertices; the filter offers: " +
+          Techniques().names([](const lt::Technique& t) { return lt::shadesVertices(t); }));
+    lt::KnobList given;
+    const std::string prefix = technique.name + ".";
+    for (const auto& [name, value] : this->Knobs)
+      if (name.compare(0, prefix.size(), prefix) == 0)
+        given.emplace_back(name.substr(prefix.size()), value);
+    const lt::KnobValues knobs = technique.values(given);
+    const double lightLength = std::sqrt(this->LightDirection[0] * this->LightDirection[0] +
+                                         this->LightDirection[1] * this->LightDirection[1] +
+                                         this->LightDirection[2] * this->LightDirection[2]);
+    if (!(lightLength > 0) || !std::isfinite(lightLength))
+      throw lt::RequestError(
+          "LightDirection must be a finite, non-zero direction towards the light, e.g. 0 0 1");
 
-  const auto material = lucent::optics::findMaterial(this->Material);
-  if (!material) {
-    vtkErrorMacro("Material '" << this->Material << "' is not a measured material; use one of: "
-                  << lucent::optics::measuredMaterialNames());
-    return 0;
-  }
-  const double lightLength = std::sqrt(this->LightDirection[0] * this->LightDirection[0] +
-                                       this->LightDirection[1] * this->LightDirection[1] +
-                                       this->LightDirection[2] * this->LightDirection[2]);
-  if (!(lightLength > 0)) {
-    vtkErrorMacro("LightDirection is the zero vector; give the direction towards the light, e.g. 0 0 1");
-    return 0;
-  }
-
-  vtkNew<vtkTriangleFilter> triangulate;
-  triangulate->SetInputData(input);
-  triangulate->PassVertsOff();
-  triangulate->PassLinesOff();
-  triangulate->Update();
-  vtkPolyData* triangles = triangulate->GetOutput();
-  if (triangles->GetNumberOfPolys() == 0) {
-    vtkErrorMacro("The input has no polygons; apply the filter to a closed surface (for an image or volume, "
-                  "extract one first, e.g. Contour or Extract Surface)");
-    return 0;
-  }
-
-  // The mesh in millimetres: as given, or scaled about the origin to SizeMm.
-  const double scale = this->SizeMm > 0 ? this->SizeMm / std::max(triangles->GetLength(), 1e-300) : 1.0;
-  lucent::scene::TriangleMesh mesh;
-  const vtkIdType pointCount = triangles->GetNumberOfPoints();
-  vtkNew<vtkPoints> scaledPoints;
-  scaledPoints->SetDataTypeToDouble();
-  scaledPoints->SetNumberOfPoints(pointCount);
-  mesh.positions.resize(std::size_t(pointCount));
-  for (vtkIdType i = 0; i < pointCount; ++i) {
-    double p[3];
-    triangles->GetPoint(i, p);
-    for (double& c : p) c *= scale;
-    scaledPoints->SetPoint(i, p);
-    mesh.positions[std::size_t(i)] = glm::vec3(float(p[0]), float(p[1]), float(p[2]));
-  }
-  vtkCellArray* polys = triangles->GetPolys();
-  polys->InitTraversal();
-  vtkIdType n = 0;
-  const vtkIdType* ids = nullptr;
-  while (polys->GetNextCell(n, ids))
-    if (n == 3) mesh.triangles.push_back({unsigned(ids[0]), unsigned(ids[1]), unsigned(ids[2])});
-  vtkNew<vtkPolyData> scaled;
-  scaled->SetPoints(scaledPoints);
-  scaled->SetPolys(polys);
-  const vtkLucentRayCaster caster(scaled);
-
-  // Stage 1 (first half of the progress): samples and their shadowed, Fresnel-transmitted irradiance.
-  const auto dipole = lucent::optics::Dipole<float>::make(lucent::optics::Rgb<float>(material->sigmaA),
-                                                          lucent::optics::Rgb<float>(material->sigmaSPrime),
-                                                          float(material->eta));
-  const glm::dvec3 towardLight =
-      glm::dvec3(this->LightDirection[0], this->LightDirection[1], this->LightDirection[2]) / lightLength;
-  const std::vector<lucent::scene::Light> lights = {
-      lucent::scene::DirectionalLight{towardLight, glm::dvec3(this->LightIrradiance)}};
-  lucent::scene::IrradianceSettings irradiance;
-  irradiance.eta = material->eta;
-  irradiance.rayEpsilon = 1e-5 * mesh.bounds().diagonal();
-  auto stageOne = [this](double f) { this->UpdateProgress(0.5 * f); };
-  std::function<glm::dvec3(const glm::dvec3&)> radiosityAt;
-  std::unique_ptr<lucent::reference::DipoleTruth<float>> truth;
-  std::unique_ptr<lucent::atlas::TsisEvaluator> tsis;
-  if (this->Technique == TSIS) {
-    lucent::atlas::AtlasOptions atlasOptions;
-    atlasOptions.resolution = this->AtlasResolution;
-    lucent::atlas::TextureAtlas atlas;
-    try {
-      atlas = lucent::atlas::buildTextureAtlas(mesh, atlasOptions);
-    } catch (const std::exception& e) {
-      vtkErrorMacro("The texture atlas could not be built (" << e.what() << "); raise AtlasResolution or use the "
-                    "Reference technique");
-      return 0;
+    lucent::vtkadapter::PolyDataMesh surface = lucent::vtkadapter::meshFromData(input);
+    if (surface.mesh.triangles.empty())
+      throw lt::RequestError(
+          "The input has no polygons; apply the filter to a closed surface (for an image or "
+          "volume, "
+          "extract one first, e.g. Contour or Extract Surface)");
+    // The mesh in millimetres: as given, or scaled about the origin to SizeMm. The output keeps the
+    // input's coordinates (it must line up with the user's other data); only the computation is
+    // scaled.
+    const double diagonal = surface.mesh.bounds().diagonal();
+    if (!(diagonal > 0) || !std::isfinite(diagonal))
+      throw lt::RequestError("The input has zero or non-finite extent");
+    const double scale = this->SizeMm > 0 ? this->SizeMm / diagonal : 1.0;
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(vtkIdType(surface.mesh.positions.size()));
+    for (std::size_t i = 0; i < surface.mesh.positions.size(); ++i) {
+      surface.mesh.positions[i] = glm::vec3(glm::dvec3(surface.mesh.positions[i]) * scale);
+      const glm::vec3& p = surface.mesh.positions[i];
+      points->SetPoint(vtkIdType(i), p.x, p.y, p.z);
     }
-    const auto irradianceAtlas = lucent::atlas::renderIrradianceAtlas(atlas, mesh, mesh.vertexNormals(), lights, caster,
-                                                                      irradiance, lucent::util::serialFor, stageOne);
-    lucent::atlas::SamplingOptions sampling;
-    sampling.samples = this->TsisSamples;
-    tsis = std::make_unique<lucent::atlas::TsisEvaluator>(lucent::atlas::drawImportanceSamples(irradianceAtlas, sampling),
-                                                          dipole);
-    this->SampleCount = vtkIdType(tsis->samples().size());
-    radiosityAt = [&tsis](const glm::dvec3& p) { return tsis->radiosity(p); };
-  } else {
-    const auto spacing = lucent::reference::chooseSpacing(mesh, double(dipole.minMeanFreePath()), this->SampleFraction,
-                                                          std::size_t(this->MaxSamples));
-    if (spacing.budgetLimited)
-      vtkWarningMacro("MaxSamples limits the sample spacing to " << spacing.spacing << " mm (" << this->SampleFraction
-                      << " of the mean free path asked); raise MaxSamples for a converged result");
-    const auto samples = lucent::reference::buildSurfaceSamples(mesh, spacing.spacing);
-    this->SampleCount = vtkIdType(samples.size());
-    truth = std::make_unique<lucent::reference::DipoleTruth<float>>(samples, dipole, lights, caster, irradiance,
-                                                                    lucent::util::serialFor, stageOne);
-    radiosityAt = [&truth](const glm::dvec3& p) { return truth->radiosity(p); };
-  }
+    vtkNew<vtkPolyData> millimetres;
+    millimetres->SetPoints(points);
+    millimetres->SetPolys(surface.triangles->GetPolys());
+    const vtkLucentRayCaster caster(millimetres);
+    output->ShallowCopy(surface.triangles);
 
-  // Stage 2: B at every vertex (Eq. 3), in parallel chunks with progress between them.
-  vtkNew<vtkFloatArray> radiosity;
-  radiosity->SetName("Radiosity");
-  radiosity->SetNumberOfComponents(3);
-  radiosity->SetNumberOfTuples(pointCount);
-  vtkNew<vtkUnsignedCharArray> colour;
-  colour->SetName("TranslucentColor");
-  colour->SetNumberOfComponents(3);
-  colour->SetNumberOfTuples(pointCount);
-  const vtkIdType chunk = std::max<vtkIdType>(1, pointCount / 20);
-  for (vtkIdType begin = 0; begin < pointCount; begin += chunk) {
-    const vtkIdType end = std::min(pointCount, begin + chunk);
-    vtkSMPTools::For(begin, end, [&](vtkIdType first, vtkIdType last) {
-      for (vtkIdType i = first; i < last; ++i) {
-        const glm::dvec3 b = radiosityAt(glm::dvec3(mesh.positions[std::size_t(i)]));
-        for (int c = 0; c < 3; ++c) {
-          radiosity->SetTypedComponent(i, c, float(b[c]));
-          colour->SetTypedComponent(i, c, displayByte(this->Exposure * b[c]));
-        }
-      }
-    });
-    this->UpdateProgress(0.5 + 0.5 * double(end) / double(pointCount));
-  }
+    lt::SceneDescription scene;
+    scene.meshName = "the filter's input";
+    scene.mesh = std::move(surface.mesh);
+    scene.vertexNormals = scene.mesh.vertexNormals();
+    scene.medium.material = *material;
+    const glm::dvec3 toLight =
+        glm::dvec3(this->LightDirection[0], this->LightDirection[1], this->LightDirection[2]);
+    scene.lights = {
+        lucent::scene::DirectionalLight{toLight / lightLength, glm::dvec3(this->LightIrradiance)}};
+    scene.caster = &caster;
+    scene.parallelFor = smpFor;
+    // Progress from the calling thread only (VTK's events are not thread-safe); each stage moves
+    // the bar half of the way that is left, so it never goes back.
+    const std::thread::id caller = std::this_thread::get_id();
+    std::string stage;
+    int stages = 0;
+    scene.progress = [&](const std::string& name, double f) {
+      if (std::this_thread::get_id() != caller) return;
+      if (name != stage) stage = name, ++stages;
+      this->UpdateProgress(1 - std::pow(0.5, stages - 1) * (1 - 0.5 * std::clamp(f, 0.0, 1.0)));
+    };
+    const lt::ShadeRequest request = lt::vertexRequest(scene.mesh);
+    const lt::Rendered result = Techniques().render(technique, scene, knobs, request);
+    for (const auto& w : result.stats.warnings) vtkWarningMacro(<< technique.name << ": " << w);
+    this->SampleCount = vtkIdType(result.stats.samples);
 
-  output->ShallowCopy(triangles);
-  output->GetPointData()->AddArray(radiosity);
-  output->GetPointData()->SetScalars(colour);
-  return 1;
+    const auto& shown =
+        result.frame.radiosity.empty() ? result.frame.radiance : result.frame.radiosity;
+    if (!result.frame.radiosity.empty())
+      output->GetPointData()->AddArray(tupleArray("Radiosity", result.frame.radiosity));
+    output->GetPointData()->AddArray(tupleArray("Radiance", result.frame.radiance));
+    output->GetPointData()->SetScalars(colourArray(shown, this->Exposure));
+    this->UpdateProgress(1.0);
+    return 1;
+  } catch (const std::exception& e) {
+    output->Initialize();
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
 }

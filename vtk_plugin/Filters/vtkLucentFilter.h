@@ -1,23 +1,34 @@
 /// @file vtkLucentFilter.h
-/// @brief Translucent shading of a closed surface on the CPU: per-vertex radiosity B of subsurface
-/// scattering (L = Ft B / pi) under one directional light with Fresnel-transmitted, shadowed irradiance,
-/// by one of two techniques:
-///  - Reference: lucent's brute-force dipole sum over dense surface samples (texture-space-importance-
-///    sampling Eq. 3), the ground truth;
-///  - TSIS: texture-space importance sampling (Sec. 3): irradiance into the chart atlas, N texels drawn by
-///    the mip-map ICDF, B = sum_i w_i Rd(|x_i - x_o|) (Eq. 9-10) at every vertex.
+/// @brief Translucent shading of a closed surface on the CPU, by any technique of lucent's registry
+/// that shades vertices (lucent/technique: reference, jensen-buhler, tsis, hybrid, tsm; `lucent
+/// techniques`): per-vertex radiosity B of subsurface scattering (L = Ft B / pi) under one
+/// directional light with Fresnel-transmitted, shadowed irradiance.
 ///
-/// Output: the input triangulated, with point arrays "Radiosity" (3 floats, irradiance units) and
-/// "TranslucentColor" (3 unsigned chars, Exposure * B tone-mapped x / (1 + x), sRGB-encoded, the active
-/// scalars so a plain mapper shows it). Lengths: the data's units are taken as millimetres, or the data is
-/// scaled so its bounding-box diagonal is SizeMm. Reports progress (ProgressEvent) through both stages.
+/// Knobs are the technique's own, by qualified name ("tsis.samples"), set with SetKnob; their
+/// types, defaults and ranges live in the technique's description only, and the ParaView properties
+/// ("TsisSamples", the mechanical CamelCase) are generated from it. Values are checked when the
+/// filter runs.
+///
+/// Output: the input triangulated and welded (lucentPolyDataMesh.h), with point arrays "Radiosity"
+/// (3 floats, irradiance units; techniques that compute B), "Radiance" (3 floats, seen head-on) and
+/// "TranslucentColor" (3 unsigned chars, Exposure * B (else the radiance) tone-mapped x / (1 + x),
+/// sRGB-encoded, the active scalars). Lengths: the data's units are millimetres, or the data is
+/// scaled so its bounding-box diagonal is SizeMm. Reports progress (ProgressEvent) through every
+/// stage.
 #ifndef vtkLucentFilter_h
 #define vtkLucentFilter_h
 
+#include <map>
 #include <string>
 
-#include "LucentFiltersModule.h"
 #include <vtkPolyDataAlgorithm.h>
+#include "LucentFiltersModule.h"
+
+#ifndef __VTK_WRAP__
+namespace lucent::technique {
+class Registry;
+}
+#endif
 
 class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
  public:
@@ -26,19 +37,22 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// Measured material by name (`lucent materials` lists them): skin1, marble, ketchup, ... Default skin1.
+  /// Measured material by name (`lucent materials` lists them): skin1, marble, ketchup, ... Default
+  /// skin1.
   void SetMaterial(const char* name);
   const char* GetMaterial() const { return this->Material.c_str(); }
   ///@}
 
   ///@{
-  /// Object size: 0 (default) = the data's units are mm; > 0 = scale so the bounding-box diagonal is this.
+  /// Object size: 0 (default) = the data's units are mm; > 0 = scale so the bounding-box diagonal
+  /// is this.
   vtkSetClampMacro(SizeMm, double, 0.0, 1.0e6);
   vtkGetMacro(SizeMm, double);
   ///@}
 
   ///@{
-  /// Direction towards the light (need not be unit) and the irradiance it gives a surface facing it.
+  /// Direction towards the light (need not be unit) and the irradiance it gives a surface facing
+  /// it.
   vtkSetVector3Macro(LightDirection, double);
   vtkGetVector3Macro(LightDirection, double);
   vtkSetClampMacro(LightIrradiance, double, 0.0, 1.0e6);
@@ -46,27 +60,30 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   ///@}
 
   ///@{
-  /// Technique: Reference (0, default) or TSIS (1).
-  enum Techniques { Reference = 0, TSIS = 1 };
-  vtkSetClampMacro(Technique, int, Reference, TSIS);
-  vtkGetMacro(Technique, int);
+  /// The technique, by its registry name; default "reference". GetTechniqueName(i) lists those
+  /// offered.
+  void SetTechnique(const char* name);
+  const char* GetTechnique() const { return this->Technique.c_str(); }
+  static int GetNumberOfTechniques();
+  static std::string GetTechniqueName(int i);
   ///@}
 
   ///@{
-  /// TSIS knobs: N importance samples (Eq. 9-11) and the atlas's texels per side.
-  vtkSetClampMacro(TsisSamples, int, 1, 10000000);
-  vtkGetMacro(TsisSamples, int);
-  vtkSetClampMacro(AtlasResolution, int, 16, 8192);
-  vtkGetMacro(AtlasResolution, int);
+  /// A knob of any offered technique by its qualified name, e.g. SetKnob("tsis.samples", "4096").
+  /// The typed forms are what the ParaView properties call. GetKnob gives the value set, else the
+  /// technique's default.
+  void SetKnob(const char* qualifiedName, const char* value);
+  void SetKnobInteger(const char* qualifiedName, int value);
+  void SetKnobReal(const char* qualifiedName, double value);
+  std::string GetKnob(const char* qualifiedName) const;
   ///@}
 
   ///@{
-  /// Accuracy knobs of the reference's dipole sum: sample spacing as a fraction of the smallest mean free path, and the
-  /// sample budget (the spacing is coarsened to respect it, with a warning).
-  vtkSetClampMacro(SampleFraction, double, 0.01, 100.0);
-  vtkGetMacro(SampleFraction, double);
-  vtkSetClampMacro(MaxSamples, int, 1000, 100000000);
-  vtkGetMacro(MaxSamples, int);
+  /// The knob properties of every offered technique, in registry order: the property name
+  /// ("TsisSamples") and the qualified knob name ("tsis.samples") of each.
+  static int GetNumberOfKnobProperties();
+  static std::string GetKnobPropertyName(int i);
+  static std::string GetKnobQualifiedName(int i);
   ///@}
 
   ///@{
@@ -75,8 +92,15 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   vtkGetMacro(Exposure, double);
   ///@}
 
-  /// Samples of the last run: the reference's surface samples, or TSIS's drawn samples (for sweeps and tests).
+  /// Samples of the last run, as the technique counts them (surface samples, importance samples,
+  /// ...).
   vtkGetMacro(SampleCount, vtkIdType);
+
+#ifndef __VTK_WRAP__
+  /// The techniques the filter offers from: lucent's core techniques. Code may add its own (tests
+  /// do).
+  static lucent::technique::Registry& Techniques();
+#endif
 
  protected:
   vtkLucentFilter();
@@ -84,14 +108,11 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   std::string Material = "skin1";
-  int Technique = Reference;
-  int TsisSamples = 4096;
-  int AtlasResolution = 1024;
+  std::string Technique = "reference";
+  std::map<std::string, std::string> Knobs;  ///< qualified name -> value, as set
   double SizeMm = 0.0;
   double LightDirection[3] = {0.0, 0.0, 1.0};
   double LightIrradiance = 1.0;
-  double SampleFraction = 0.5;
-  int MaxSamples = 500000;
   double Exposure = 1.0;
   vtkIdType SampleCount = 0;
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "properties.hpp"
 #include "technique.hpp"
 
 namespace lucent::technique {
@@ -29,6 +30,13 @@ class Registry {
           throw std::logic_error("technique '" + t.name + "': knobs " + t.knobs[i].name + " and " +
                                  t.knobs[j].name + " have the same CamelCase name");
     t.values();  // the defaults must pass their own checks
+    for (const auto& other : mAll)
+      for (const auto& k : t.knobs)
+        for (const auto& ok : other.knobs)
+          if (propertyName(t, k) == propertyName(other, ok))
+            throw std::logic_error("technique '" + t.name + "' knob " + k.name +
+                                   " and technique '" + other.name + "' knob " + ok.name +
+                                   " have the same property name " + propertyName(t, k));
     mAll.push_back(std::move(t));
   }
   const std::vector<Technique>& all() const { return mAll; }

@@ -50,6 +50,7 @@ struct Technique {
   std::string name;     ///< what --method, the registry and (CamelCase) VTK properties call it
   std::string summary;  ///< one line
   std::string paper;    ///< the reference and the equations implemented
+  std::string requires;  ///< the library its adapter links (empty: header-only, every front end has it)
   std::vector<KnobSpec> knobs;
   Capabilities capabilities;
   std::vector<Sweep> defaultSweep;  ///< what `lucent bench` sweeps when no --sweep is given

@@ -37,7 +37,7 @@ inline std::vector<KnobSpec> samplingKnobs(long long samples) {
           KnobSpec::choice(
               "pattern", {"stratified", "independent"},
               "2-D input points: stratified (Hammersley, shifted) or independent (as the paper)"),
-          KnobSpec::integer("seed", 1, 0, 1000000000000000LL, "random seed")};
+          KnobSpec::integer("seed", 1, 0, 2147483647, "random seed")};
 }
 
 inline std::vector<KnobSpec> ringKnobs() {
