@@ -39,7 +39,7 @@ done
 
 # The default scene (genus-7 ring, 30 mm, skin1): every method's knobs against the same truth.
 echo "== default scene"
-"$lucent" bench --method tsis --sweep samples=400,1600,6400,25600 --sweep atlas=512,1024 "${ref[@]}" "${jb[@]}" \
+"$lucent" bench --method tsis --sweep samples=400,1600,6400,25600 --sweep atlas-resolution=512,1024 "${ref[@]}" "${jb[@]}" \
   --csv "$out/default-tsis.csv" --plot "$out/default-tsis.png" > "$out/default-tsis.txt"
 "$lucent" bench --method hybrid --sweep samples=400,900,3600 --sweep rings=10,20 "${ref[@]}" "${jb[@]}" \
   --csv "$out/default-hybrid.csv" --plot "$out/default-hybrid.png" > "$out/default-hybrid.txt"

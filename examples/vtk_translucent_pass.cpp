@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
   lucent->SetDelegatePass(steps);
   lucent->SetMaterial("skin1");
   lucent->SetSizeMm(30);  // the object's bounding-box diagonal is 30 mm
-  lucent->SetSampleCount(samples);
+  lucent->SetSamples(samples);
   lucent->SetExposure(12);  // L = Ft B / pi: about pi times darker than the filter's B at the same exposure
   renderer->SetPass(lucent);
 
@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
     // Each frame redoes every stage (the light or the object may move); the camera orbits to defeat caching.
     std::printf("%8s %12s %12s\n", "samples", "ms/frame", "frames/s");
     for (int n : {16, 64, 256, 1024}) {
-      lucent->SetSampleCount(n);
+      lucent->SetSamples(n);
       window->Render();  // warm-up: shader compile, atlas
       const int frames = 5;
       const auto start = std::chrono::steady_clock::now();

@@ -63,6 +63,9 @@ std::string knobJson(const KnobSpec& k) {
 std::string techniqueJson(const technique::Technique& t) {
   JsonObject caps;
   for (const auto& [name, value] : flags(t.capabilities)) caps.raw(name, value ? "true" : "false");
+  std::vector<std::string> twinKnobs;
+  for (const auto& k : t.capabilities.gpuTwinKnobs) twinKnobs.push_back(JsonObject::quote(k));
+  caps.raw("gpu_twin_knobs", jsonList(twinKnobs));
   caps.add("gpu_twin", t.capabilities.gpuTwin)
       .add("precompute_scaling", t.capabilities.precomputeScaling)
       .add("frame_scaling", t.capabilities.frameScaling);

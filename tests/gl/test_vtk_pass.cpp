@@ -1,6 +1,7 @@
-// vtkLucentPass (the GPU path) as a VTK user runs it, headless under xvfb-run: its per-pixel radiance
-// against lucent's CPU dipole truth on the same sphere and light, the back-lit glow in the final image,
-// and the hard cases (zero absorption, 1 um and 1 m objects, degenerate and polygon-free data, bad input).
+// vtkLucentPass (the GPU path) as a VTK user runs it, headless under xvfb-run: its per-pixel
+// radiance against lucent's CPU dipole truth on the same sphere and light, the back-lit glow in the
+// final image, and the hard cases (zero absorption, 1 um and 1 m objects, degenerate and
+// polygon-free data, bad input).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -29,6 +30,7 @@
 #include <lucent/reference/dipole_truth.hpp>
 #include <lucent/reference/surface_samples.hpp>
 
+#include "lucentPolyDataMesh.h"
 #include "raycast/embree_ray_caster.hpp"
 #include "vtkLucentPass.h"
 
@@ -82,20 +84,9 @@ vtkSmartPointer<vtkPolyData> sphere(double radius, int resolution) {
   return source->GetOutput();
 }
 
+/// The mesh the pass itself builds from the data (the one conversion, lucentPolyDataMesh.h).
 lucent::scene::TriangleMesh toMesh(vtkPolyData* data) {
-  lucent::scene::TriangleMesh mesh;
-  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i) {
-    double p[3];
-    data->GetPoint(i, p);
-    mesh.positions.emplace_back(float(p[0]), float(p[1]), float(p[2]));
-  }
-  vtkCellArray* polys = data->GetPolys();
-  polys->InitTraversal();
-  vtkIdType n = 0;
-  const vtkIdType* ids = nullptr;
-  while (polys->GetNextCell(n, ids))
-    for (vtkIdType k = 1; k + 1 < n; ++k) mesh.triangles.push_back({unsigned(ids[0]), unsigned(ids[k]), unsigned(ids[k + 1])});
-  return mesh;
+  return lucent::vtkadapter::meshFromData(data).mesh;
 }
 
 struct Frame {
@@ -120,11 +111,14 @@ Frame lastFrame(vtkLucentPass* pass) {
 }
 }  // namespace
 
-TEST_CASE("vtkLucentPass: per-pixel radiance matches the CPU dipole truth on a side-lit skin sphere, and converges in N") {
+TEST_CASE(
+    "vtkLucentPass: per-pixel radiance matches the CPU dipole truth on a side-lit skin sphere, and "
+    "converges in N") {
   // A 20 mm skin sphere lit from the side, so the frame holds lit surface, the terminator and light
   // carried under the surface into the shadow. The reference sums Rd over a dense stratified set of
-  // surface samples with Embree shadow rays (lucent/reference/dipole_truth.hpp), at each pixel's own
-  // surface point; the GPU path importance-samples N atlas texels (one set shared by all pixels).
+  // surface samples with Embree shadow rays (lucent/reference/dipole_truth.hpp), at each pixel's
+  // own surface point; the GPU path importance-samples N atlas texels (one set shared by all
+  // pixels).
   const auto data = sphere(10.0, 96);
   const double toward[3] = {1.0, 0.3, 0.4};
   PassScene scene(data, toward, 96);
@@ -134,11 +128,14 @@ TEST_CASE("vtkLucentPass: per-pixel radiance matches the CPU dipole truth on a s
   const auto mesh = toMesh(data);
   const lucent::raycast::EmbreeRayCaster caster(mesh);
   const auto material = *lucent::optics::findMaterial("skin1");
-  const auto dipole = lucent::optics::Dipole<float>::make(lucent::optics::Rgb<float>(material.sigmaA),
-                                                          lucent::optics::Rgb<float>(material.sigmaSPrime), float(material.eta));
-  const auto samples = lucent::reference::buildSurfaceSamples(mesh, 0.25 * double(dipole.minMeanFreePath()));
+  const auto dipole = lucent::optics::Dipole<float>::make(
+      lucent::optics::Rgb<float>(material.sigmaA), lucent::optics::Rgb<float>(material.sigmaSPrime),
+      float(material.eta));
+  const auto samples =
+      lucent::reference::buildSurfaceSamples(mesh, 0.25 * double(dipole.minMeanFreePath()));
   const glm::dvec3 towardLight = glm::normalize(glm::dvec3(toward[0], toward[1], toward[2]));
-  const std::vector<lucent::scene::Light> lights = {lucent::scene::DirectionalLight{towardLight, glm::dvec3(1.0)}};
+  const std::vector<lucent::scene::Light> lights = {
+      lucent::scene::DirectionalLight{towardLight, glm::dvec3(1.0)}};
   lucent::scene::IrradianceSettings irradiance;
   irradiance.eta = material.eta;
   irradiance.rayEpsilon = 1e-4;
@@ -147,7 +144,7 @@ TEST_CASE("vtkLucentPass: per-pixel radiance matches the CPU dipole truth on a s
   double relRms[2][3];
   const int counts[2] = {1024, 4096};
   for (int run = 0; run < 2; ++run) {
-    scene.pass->SetSampleCount(counts[run]);
+    scene.pass->SetSamples(counts[run]);
     scene.render();
     REQUIRE(scene.pass->GetTranslucentActorCount() == 1);
     const Frame f = lastFrame(scene.pass);
@@ -159,7 +156,8 @@ TEST_CASE("vtkLucentPass: per-pixel radiance matches the CPU dipole truth on a s
       const glm::dvec3 p(f.position[4 * i], f.position[4 * i + 1], f.position[4 * i + 2]);
       const double cosOut = std::abs(double(f.normal[4 * i + 3]));
       const glm::dvec3 ref =
-          truth.radiosity(p) * (lucent::optics::fresnelTransmittance(cosOut, material.eta) / lucent::optics::kPi);
+          truth.radiosity(p) *
+          (lucent::optics::fresnelTransmittance(cosOut, material.eta) / lucent::optics::kPi);
       for (int c = 0; c < 3; ++c) {
         const double g = f.radiance[4 * i + c];
         diff2[c] += (g - ref[c]) * (g - ref[c]);
@@ -171,14 +169,14 @@ TEST_CASE("vtkLucentPass: per-pixel radiance matches the CPU dipole truth on a s
     for (int c = 0; c < 3; ++c) {
       relRms[run][c] = std::sqrt(diff2[c] / ref2[c]);
       const double meanRatio = gpuSum[c] / refSum[c];
-      MESSAGE("N = " << counts[run] << ", channel " << c << ": relative RMS " << relRms[run][c] << ", mean GPU / CPU "
-                     << meanRatio);
+      MESSAGE("N = " << counts[run] << ", channel " << c << ": relative RMS " << relRms[run][c]
+                     << ", mean GPU / CPU " << meanRatio);
       // Unbiased: the mean over the frame agrees within 2 % at every N.
       CHECK(meanRatio == doctest::Approx(1.0).epsilon(0.02));
     }
   }
-  // Per-pixel error: sampling noise, largest in blue (shortest mean free path, the sharpest profile);
-  // it shrinks with N, towards the floor of the shadow map and texel-centre positions.
+  // Per-pixel error: sampling noise, largest in blue (shortest mean free path, the sharpest
+  // profile); it shrinks with N, towards the floor of the shadow map and texel-centre positions.
   for (int c = 0; c < 3; ++c) CHECK(relRms[1][c] < 0.05);
   CHECK(relRms[1][2] < relRms[0][2] / 1.4);
 }
@@ -193,7 +191,8 @@ TEST_CASE("vtkLucentPass: a back-lit sphere glows at its rim; without the pass i
   scene.render();
   REQUIRE(scene.pass->GetTranslucentActorCount() == 1);
   const auto withPass = scene.pixels();
-  scene.pass->ReleaseGraphicsResources(scene.window);  // a pass taken out of a renderer frees its own GPU data
+  scene.pass->ReleaseGraphicsResources(
+      scene.window);  // a pass taken out of a renderer frees its own GPU data
   scene.renderer->SetPass(nullptr);
   scene.render();
   const auto without = scene.pixels();
@@ -206,7 +205,8 @@ TEST_CASE("vtkLucentPass: a back-lit sphere glows at its rim; without the pass i
   const Frame f = lastFrame(scene.pass);
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x)
-      if (f.radiance[4 * (std::size_t(y) * n + x) + 3] > 0) silhouette = std::max(silhouette, std::hypot(x - centre, y - centre));
+      if (f.radiance[4 * (std::size_t(y) * n + x) + 3] > 0)
+        silhouette = std::max(silhouette, std::hypot(x - centre, y - centre));
   REQUIRE(silhouette > 10);
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) {
@@ -230,8 +230,11 @@ TEST_CASE("vtkLucentPass: hard cases stay finite; bad input is reported, not cra
   SUBCASE("zero absorption (spectralon), a 1 um and a 1 m object") {
     const auto data = sphere(1.0, 48);
     PassScene scene(data, side, 64);
-    for (const auto& [material, size] : {std::pair<const char*, double>{"spectralon", 20.0}, {"skin1", 1e-3}, {"skin1", 1e3},
-                                         {"marble", 1e6}, {"ketchup", 1e-6}}) {
+    for (const auto& [material, size] : {std::pair<const char*, double>{"spectralon", 20.0},
+                                         {"skin1", 1e-3},
+                                         {"skin1", 1e3},
+                                         {"marble", 1e6},
+                                         {"ketchup", 1e-6}}) {
       scene.pass->SetMaterial(material);
       scene.pass->SetSizeMm(size);
       scene.render();
@@ -241,7 +244,8 @@ TEST_CASE("vtkLucentPass: hard cases stay finite; bad input is reported, not cra
       CHECK(f.covered() > 500);
       CHECK(f.allFiniteNonNegative());
       double peak = 0;
-      for (std::size_t i = 0; i < f.radiance.size(); i += 4) peak = std::max<double>(peak, f.radiance[i]);
+      for (std::size_t i = 0; i < f.radiance.size(); i += 4)
+        peak = std::max<double>(peak, f.radiance[i]);
       CHECK(peak > 0);  // every case is lit and scatters
     }
   }
@@ -262,7 +266,9 @@ TEST_CASE("vtkLucentPass: hard cases stay finite; bad input is reported, not cra
     CHECK(f.covered() > 500);
     CHECK(f.allFiniteNonNegative());
   }
-  SUBCASE("lines only: nothing translucent, no error; an unknown material: an error naming the choices") {
+  SUBCASE(
+      "lines only: nothing translucent, no error; an unknown material: an error naming the "
+      "choices") {
     vtkNew<vtkPolyData> lines;
     vtkNew<vtkPoints> points;
     points->InsertNextPoint(0, 0, 0);

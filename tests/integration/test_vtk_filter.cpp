@@ -137,7 +137,7 @@ TEST_CASE("vtkLucentFilter: the TSIS technique matches the reference per vertex 
     filter->SetLightDirection(1, 0.3, 0.4);
     filter->SetTechnique(technique);
     filter->SetKnobInteger("tsis.samples", samples);
-    filter->SetKnobInteger("tsis.atlas", 512);
+    filter->SetKnobInteger("tsis.atlas-resolution", 512);
     filter->Update();
     vtkDataArray* b = filter->GetOutput()->GetPointData()->GetArray("Radiosity");
     REQUIRE(b != nullptr);

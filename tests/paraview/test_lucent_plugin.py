@@ -51,11 +51,10 @@ def close(a, b):
     return a == b or abs(a - b) <= 1e-9 * max(abs(a), abs(b))
 
 
-def check_knob_property(proxy, technique, knob):
-    name = technique["vtk_name"] + knob["vtk_name"]
+def check_knob_property(proxy, name, knob):
     prop = proxy.GetProperty(name)
     if prop is None:
-        fail("the filter has no property %s for %s's knob %s" % (name, technique["name"], knob["name"]))
+        fail("no property %s for the knob %s" % (name, knob["name"]))
     kind = knob["kind"]
     if kind in ("integer", "real"):
         if not close(float(prop.GetElement(0)), float(knob["default"])):
@@ -90,7 +89,8 @@ def check_generated_properties(path):
     if listed != [t["name"] for t in offered]:
         fail("the Technique property offers %s, the registry's per-vertex techniques are %s"
              % (listed, [t["name"] for t in offered]))
-    expected = {check_knob_property(proxy, t, k) for t in offered for k in t["knobs"] if k["kind"] != "output-file"}
+    expected = {check_knob_property(proxy, t["vtk_name"] + k["vtk_name"], k)
+                for t in offered for k in t["knobs"] if k["kind"] != "output-file"}
     it = proxy.NewPropertyIterator()
     it.Begin()
     present = set()
@@ -114,7 +114,19 @@ def check_generated_properties(path):
     if probe.PointData["Radiosity"] is None:
         fail("the tsis technique chosen through the properties gave no Radiosity")
     Delete(probe)
-    print("generated properties: %d knobs of %d techniques, equal to the registry" % (len(expected), len(offered)))
+    # The view's properties for the knobs its GPU pass shares with its technique (tsis).
+    view_proxy = CreateView("LucentRenderView").SMProxy
+    twins = 0
+    for t in registry:
+        if t["capabilities"]["gpu_twin"] == "vtkLucentPass":
+            for name in t["capabilities"]["gpu_twin_knobs"]:
+                knob = next(k for k in t["knobs"] if k["name"] == name)
+                check_knob_property(view_proxy, "Lucent" + knob["vtk_name"], knob)
+                twins += 1
+    if twins == 0:
+        fail("no technique names vtkLucentPass as its GPU twin")
+    print("generated properties: %d knobs of %d techniques and %d of the view, equal to the registry"
+          % (len(expected), len(offered), twins))
 
 
 if techniques_json:
@@ -169,7 +181,7 @@ lucent_view.LucentMaterial = "skin1"
 lucent_view.LucentSizeMm = 30.0
 lucent_view.LucentLightDirection = [0.0, 0.5, -1.0]  # from behind, as seen by the camera
 lucent_view.LucentExposure = 16.0
-lucent_view.LucentSampleCount = 1024
+lucent_view.LucentSamples = 1024
 surface = Show(shape, lucent_view)
 surface.Diffuse = 0.0  # the pass supplies the diffuse (subsurface) part
 surface.Specular = 0.4

@@ -31,6 +31,7 @@
 
 #include <lucent/optics/dipole.hpp>
 #include <lucent/optics/materials.hpp>
+#include <lucent/technique/texture_space.hpp>
 
 #include "lucent_glsl.h"
 #include "vtkLucentSurface.h"
@@ -58,13 +59,15 @@ vtkSmartPointer<vtkTextureObject> newNearestTexture(vtkOpenGLRenderWindow* windo
   return t;
 }
 
-vtkSmartPointer<vtkTextureObject> newColorTexture(vtkOpenGLRenderWindow* window, int width, int height) {
+vtkSmartPointer<vtkTextureObject> newColorTexture(vtkOpenGLRenderWindow* window, int width,
+                                                  int height) {
   auto t = newNearestTexture(window);
   t->Allocate2D(unsigned(width), unsigned(height), 4, VTK_FLOAT);
   return t;
 }
 
-vtkSmartPointer<vtkTextureObject> newDepthTexture(vtkOpenGLRenderWindow* window, int width, int height) {
+vtkSmartPointer<vtkTextureObject> newDepthTexture(vtkOpenGLRenderWindow* window, int width,
+                                                  int height) {
   auto t = newNearestTexture(window);
   t->AllocateDepth(unsigned(width), unsigned(height), vtkTextureObject::Float32);
   return t;
@@ -82,17 +85,35 @@ int powerOfTwoAtLeast(int n) {
   return p;
 }
 
-/// Binds @p fbo with its attachments for drawing, viewport 0,0,w,h (not the renderer's tile origin:
-/// inside our own framebuffers the origin is always 0).
-void beginDrawing(vtkOpenGLState* state, vtkOpenGLFramebufferObject* fbo, int colorCount, int width, int height) {
+/// Saves the caller's bindings, binds @p fbo with these attachments for drawing, viewport and
+/// scissor 0,0,w,h (not the renderer's tile origin: inside our own framebuffers the origin is
+/// always 0).
+void beginDrawing(vtkOpenGLState* state, vtkOpenGLFramebufferObject* fbo,
+                  std::initializer_list<vtkTextureObject*> colors, vtkTextureObject* depth,
+                  int width, int height) {
   fbo->SaveCurrentBindingsAndBuffers();
   fbo->Bind();
-  if (colorCount > 0) fbo->ActivateDrawBuffers(unsigned(colorCount));
-  else fbo->DeactivateDrawBuffers();
+  unsigned count = 0;
+  for (vtkTextureObject* c : colors) fbo->AddColorAttachment(count++, c);
+  if (depth) fbo->AddDepthAttachment(depth);
+  if (count > 0)
+    fbo->ActivateDrawBuffers(count);
+  else
+    fbo->DeactivateDrawBuffers();
   state->vtkglViewport(0, 0, width, height);
   state->vtkglScissor(0, 0, width, height);
 }
 
+/// tsis's knob as the technique declares it (the pass is its GPU twin).
+const lucent::technique::KnobSpec& tsisKnob(const std::string& name) {
+  static const lucent::technique::Technique tsis = lucent::technique::tsisTechnique();
+  return *tsis.knob(name);
+}
+int tsisDefault(const std::string& name) { return std::stoi(tsisKnob(name).defaultValue); }
+int clampToTsis(const std::string& name, int value) {
+  const auto& k = tsisKnob(name);
+  return int(std::clamp(double(value), k.min, k.max));
+}
 void endDrawing(vtkOpenGLFramebufferObject* fbo) {
   fbo->UnBind();
   fbo->RestorePreviousBindingsAndBuffers();
@@ -101,10 +122,13 @@ void endDrawing(vtkOpenGLFramebufferObject* fbo) {
 
 struct vtkLucentPass::Internals {
   // The delegate's image, and the translucent surfaces' radiance / position / normal / depth.
-  vtkSmartPointer<vtkOpenGLFramebufferObject> sceneFbo, translucentFbo, lightFbo, atlasFbo, samplesFbo;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> sceneFbo, translucentFbo, lightFbo, atlasFbo,
+      samplesFbo;
   vtkSmartPointer<vtkTextureObject> sceneColor, sceneDepth;
-  vtkSmartPointer<vtkTextureObject> translucentRadiance, translucentPosition, translucentNormal, translucentDepth;
-  vtkSmartPointer<vtkTextureObject> lightDepth, powerAtlas, positionAtlas, samplePosition, sampleWeight;
+  vtkSmartPointer<vtkTextureObject> translucentRadiance, translucentPosition, translucentNormal,
+      translucentDepth;
+  vtkSmartPointer<vtkTextureObject> lightDepth, powerAtlas, positionAtlas, samplePosition,
+      sampleWeight;
   vtkOpenGLQuadHelper* samplesQuad = nullptr;
   vtkOpenGLQuadHelper* compositeQuad = nullptr;
   std::string lightDepthVs, lightDepthFs, atlasVs, atlasFs, shadeVs, shadeFs;
@@ -113,15 +137,46 @@ struct vtkLucentPass::Internals {
   std::vector<float> frameRadiance, framePosition, frameNormal;
 
   Internals()
-      : lightDepthVs(lucent::glsl::kLightDepthVert), lightDepthFs(lucent::glsl::kLightDepthFrag),
-        atlasVs(lucent::glsl::kAtlasIrradianceVert), atlasFs(withSharedGlsl(lucent::glsl::kAtlasIrradianceFrag)),
-        shadeVs(lucent::glsl::kTsisShadeVert), shadeFs(withSharedGlsl(lucent::glsl::kTsisShadeFrag)) {}
+      : lightDepthVs(lucent::glsl::kLightDepthVert),
+        lightDepthFs(lucent::glsl::kLightDepthFrag),
+        atlasVs(lucent::glsl::kAtlasIrradianceVert),
+        atlasFs(withSharedGlsl(lucent::glsl::kAtlasIrradianceFrag)),
+        shadeVs(lucent::glsl::kTsisShadeVert),
+        shadeFs(withSharedGlsl(lucent::glsl::kTsisShadeFrag)) {}
 };
 
-vtkLucentPass::vtkLucentPass() : Impl(new Internals) {}
+struct vtkLucentPass::FrameSetup {
+  glm::dvec3 towardLight{0, 0, 1};
+  float irradiance[3] = {1, 1, 1};
+  float eta = 1.3f, sigmaTr[3] = {}, zr[3] = {}, zv[3] = {}, alphaPrime[3] = {};
+  int atlasSize = 0, topLevel = 0, shadowSize = 0, samplesPerRow = 0;
+  vtkMatrix4x4* worldToClip = nullptr;
+  float camera[3] = {};
+  glm::mat4 worldToLight{1.0f};  ///< of the actor being shaded
+};
+
+vtkLucentPass::vtkLucentPass()
+    : Impl(new Internals),
+      Samples(tsisDefault("samples")),
+      AtlasResolution(tsisDefault("atlas-resolution")) {}
+
+void vtkLucentPass::SetSamples(int n) {
+  n = clampToTsis("samples", n);
+  if (n == this->Samples) return;
+  this->Samples = n;
+  this->Modified();
+}
+
+void vtkLucentPass::SetAtlasResolution(int texels) {
+  texels = clampToTsis("atlas-resolution", texels);
+  if (texels == this->AtlasResolution) return;
+  this->AtlasResolution = texels;
+  this->Modified();
+}
 
 vtkLucentPass::~vtkLucentPass() {
-  if (this->Impl->sceneFbo) vtkErrorMacro("graphics resources should have been released in ReleaseGraphicsResources()");
+  if (this->Impl->sceneFbo)
+    vtkErrorMacro("graphics resources should have been released in ReleaseGraphicsResources()");
   delete this->Impl;
 }
 
@@ -136,11 +191,11 @@ void vtkLucentPass::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Material: " << this->Material << "\n"
      << indent << "SizeMm: " << this->SizeMm << "\n"
-     << indent << "SampleCount: " << this->SampleCount << "\n"
+     << indent << "Samples: " << this->Samples << "\n"
      << indent << "AtlasResolution: " << this->AtlasResolution << "\n"
      << indent << "ShadowMapResolution: " << this->ShadowMapResolution << "\n"
-     << indent << "LightDirection: " << this->LightDirection[0] << " " << this->LightDirection[1] << " "
-     << this->LightDirection[2] << "\n"
+     << indent << "LightDirection: " << this->LightDirection[0] << " " << this->LightDirection[1]
+     << " " << this->LightDirection[2] << "\n"
      << indent << "LightIrradiance: " << this->LightIrradiance << "\n"
      << indent << "Exposure: " << this->Exposure << "\n"
      << indent << "SurfaceWeight: " << this->SurfaceWeight << "\n"
@@ -153,7 +208,8 @@ void vtkLucentPass::ReportError(const std::string& message) {
   vtkErrorMacro(<< message);
 }
 
-void vtkLucentPass::InitializeGraphicsResources(vtkOpenGLRenderWindow* window, int width, int height) {
+void vtkLucentPass::InitializeGraphicsResources(vtkOpenGLRenderWindow* window, int width,
+                                                int height) {
   Internals& I = *this->Impl;
   if (!I.sceneFbo) {
     I.sceneFbo = newFramebuffer(window);
@@ -175,69 +231,47 @@ void vtkLucentPass::InitializeGraphicsResources(vtkOpenGLRenderWindow* window, i
     I.samplePosition = newColorTexture(window, 1, 1);
     I.sampleWeight = newColorTexture(window, 1, 1);
   }
-  for (auto* t : {I.sceneColor.Get(), I.sceneDepth.Get(), I.translucentRadiance.Get(), I.translucentPosition.Get(),
-                  I.translucentNormal.Get(), I.translucentDepth.Get()})
+  for (auto* t : {I.sceneColor.Get(), I.sceneDepth.Get(), I.translucentRadiance.Get(),
+                  I.translucentPosition.Get(), I.translucentNormal.Get(), I.translucentDepth.Get()})
     t->Resize(unsigned(width), unsigned(height));
 }
 
 void vtkLucentPass::RenderDelegateWithDepth(const vtkRenderState* s, int width, int height) {
   Internals& I = *this->Impl;
-  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow())->GetState();
-  I.sceneFbo->SaveCurrentBindingsAndBuffers();
-  I.sceneFbo->Bind();
-  I.sceneFbo->AddColorAttachment(0, I.sceneColor);
-  I.sceneFbo->ActivateDrawBuffers(1);
-  I.sceneFbo->AddDepthAttachment(I.sceneDepth);
-  I.sceneFbo->StartNonOrtho(width, height);
-  state->vtkglViewport(0, 0, width, height);
-  state->vtkglScissor(0, 0, width, height);
+  vtkOpenGLState* state =
+      static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow())->GetState();
+  beginDrawing(state, I.sceneFbo, {I.sceneColor}, I.sceneDepth, width, height);
   this->DelegatePass->Render(s);
   this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
   endDrawing(I.sceneFbo);
 }
 
-bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width, int height) {
+void vtkLucentPass::ClearTranslucentTargets(vtkOpenGLState* state, int width, int height) {
   Internals& I = *this->Impl;
-  vtkRenderer* renderer = s->GetRenderer();
-  vtkOpenGLState* state = window->GetState();
-
-  // The translucent targets start empty even when nothing is translucent.
-  I.translucentFbo->SaveCurrentBindingsAndBuffers();
-  I.translucentFbo->Bind();
-  I.translucentFbo->AddColorAttachment(0, I.translucentRadiance);
-  I.translucentFbo->AddColorAttachment(1, I.translucentPosition);
-  I.translucentFbo->AddColorAttachment(2, I.translucentNormal);
-  I.translucentFbo->AddDepthAttachment(I.translucentDepth);
-  I.translucentFbo->ActivateDrawBuffers(3);
-  state->vtkglViewport(0, 0, width, height);
-  state->vtkglScissor(0, 0, width, height);
+  beginDrawing(state, I.translucentFbo,
+               {I.translucentRadiance, I.translucentPosition, I.translucentNormal},
+               I.translucentDepth, width, height);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   state->vtkglDepthMask(GL_TRUE);
   state->vtkglClearColor(0, 0, 0, 0);
   state->vtkglClearDepth(1.0);
   state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   endDrawing(I.translucentFbo);
+}
 
-  const auto material = lucent::optics::findMaterial(this->Material);
-  if (!material) {
-    this->ReportError("vtkLucentPass: material '" + this->Material + "' is not a measured material; use one of: " +
-                      lucent::optics::measuredMaterialNames());
-    return false;
-  }
+bool vtkLucentPass::ResolveLight(vtkRenderer* renderer, FrameSetup& frame) {
   glm::dvec3 towardLight(this->LightDirection[0], this->LightDirection[1], this->LightDirection[2]);
   double scale = this->LightIrradiance, colour[3] = {1, 1, 1};
   if (!(glm::length(towardLight) > 0)) {
     vtkLight* light = nullptr;
     vtkLightCollection* lights = renderer->GetLights();
     lights->InitTraversal();
-    for (vtkLight* l = lights->GetNextItem(); l; l = lights->GetNextItem())
-      if (l->GetSwitch()) {
-        light = l;
-        break;
-      }
+    for (vtkLight* l = lights->GetNextItem(); l && !light; l = lights->GetNextItem())
+      if (l->GetSwitch()) light = l;
     if (!light) {
-      this->ReportError("vtkLucentPass: the renderer has no light switched on and LightDirection is not set; "
-                        "nothing is lit, so nothing glows");
+      this->ReportError(
+          "vtkLucentPass: the renderer has no light switched on and LightDirection is not set; "
+          "nothing is lit, so nothing glows");
       return false;
     }
     double position[3], focal[3];
@@ -245,43 +279,203 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
     light->GetTransformedFocalPoint(focal);
     light->GetDiffuseColor(colour);
     scale *= light->GetIntensity();
-    towardLight = glm::dvec3(position[0] - focal[0], position[1] - focal[1], position[2] - focal[2]);
+    towardLight =
+        glm::dvec3(position[0] - focal[0], position[1] - focal[1], position[2] - focal[2]);
     if (!(glm::length(towardLight) > 0)) {
-      this->ReportError("vtkLucentPass: the light's position equals its focal point; give it a direction");
+      this->ReportError(
+          "vtkLucentPass: the light's position equals its focal point; give it a direction");
       return false;
     }
   }
-  towardLight = glm::normalize(towardLight);
-  const float irradiance[3] = {float(scale * colour[0]), float(scale * colour[1]), float(scale * colour[2])};
+  frame.towardLight = glm::normalize(towardLight);
+  for (int c = 0; c < 3; ++c) frame.irradiance[c] = float(scale * colour[c]);
+  return true;
+}
 
-  const auto dipole = lucent::optics::Dipole<double>::make(material->sigmaA, material->sigmaSPrime, material->eta);
-  float sigmaTr[3], zr[3], zv[3], alphaPrime[3];
+bool vtkLucentPass::SetUpFrame(vtkRenderer* renderer, FrameSetup& frame) {
+  Internals& I = *this->Impl;
+  const auto material = lucent::optics::findMaterial(this->Material);
+  if (!material) {
+    this->ReportError(
+        "vtkLucentPass: material '" + this->Material +
+        "' is not a measured material; use one of: " + lucent::optics::measuredMaterialNames());
+    return false;
+  }
+  if (!this->ResolveLight(renderer, frame)) return false;
+  const auto dipole =
+      lucent::optics::Dipole<double>::make(material->sigmaA, material->sigmaSPrime, material->eta);
+  frame.eta = float(material->eta);
   for (int c = 0; c < 3; ++c) {
-    sigmaTr[c] = float(dipole.channel[c].sigmaTr);
-    zr[c] = float(dipole.channel[c].zr);
-    zv[c] = float(dipole.channel[c].zv);
-    alphaPrime[c] = float(dipole.channel[c].alphaPrime);
+    frame.sigmaTr[c] = float(dipole.channel[c].sigmaTr);
+    frame.zr[c] = float(dipole.channel[c].zr);
+    frame.zv[c] = float(dipole.channel[c].zv);
+    frame.alphaPrime[c] = float(dipole.channel[c].alphaPrime);
   }
 
-  const int atlasSize = powerOfTwoAtLeast(this->AtlasResolution);
-  const int topLevel = int(std::lround(std::log2(double(atlasSize))));
-  I.powerAtlas->SetMaxLevel(topLevel);  // vtkTextureObject's default keeps level 0 only
-  if (int(I.powerAtlas->GetWidth()) != atlasSize) {
-    I.powerAtlas->Resize(unsigned(atlasSize), unsigned(atlasSize));
-    I.positionAtlas->Resize(unsigned(atlasSize), unsigned(atlasSize));
+  frame.atlasSize = powerOfTwoAtLeast(this->AtlasResolution);
+  frame.topLevel = int(std::lround(std::log2(double(frame.atlasSize))));
+  I.powerAtlas->SetMaxLevel(frame.topLevel);  // vtkTextureObject's default keeps level 0 only
+  if (int(I.powerAtlas->GetWidth()) != frame.atlasSize) {
+    I.powerAtlas->Resize(unsigned(frame.atlasSize), unsigned(frame.atlasSize));
+    I.positionAtlas->Resize(unsigned(frame.atlasSize), unsigned(frame.atlasSize));
   }
-  const int shadowSize = this->ShadowMapResolution;
-  if (int(I.lightDepth->GetWidth()) != shadowSize) I.lightDepth->Resize(unsigned(shadowSize), unsigned(shadowSize));
-  const int samplesPerRow = int(std::ceil(std::sqrt(double(this->SampleCount))));
-  I.samplePosition->Resize(unsigned(samplesPerRow), unsigned(samplesPerRow));
-  I.sampleWeight->Resize(unsigned(samplesPerRow), unsigned(samplesPerRow));
+  frame.shadowSize = this->ShadowMapResolution;
+  if (int(I.lightDepth->GetWidth()) != frame.shadowSize)
+    I.lightDepth->Resize(unsigned(frame.shadowSize), unsigned(frame.shadowSize));
+  frame.samplesPerRow = int(std::ceil(std::sqrt(double(this->Samples))));
+  I.samplePosition->Resize(unsigned(frame.samplesPerRow), unsigned(frame.samplesPerRow));
+  I.sampleWeight->Resize(unsigned(frame.samplesPerRow), unsigned(frame.samplesPerRow));
 
-  vtkMatrix4x4 *worldToView, *viewToClip, *worldToClip;
+  vtkMatrix4x4 *worldToView, *viewToClip;
   vtkMatrix3x3* normalMatrix;
-  static_cast<vtkOpenGLCamera*>(renderer->GetActiveCamera())->GetKeyMatrices(renderer, worldToView, normalMatrix,
-                                                                              viewToClip, worldToClip);
+  static_cast<vtkOpenGLCamera*>(renderer->GetActiveCamera())
+      ->GetKeyMatrices(renderer, worldToView, normalMatrix, viewToClip, frame.worldToClip);
   double cameraPosition[3];
   renderer->GetActiveCamera()->GetPosition(cameraPosition);
+  for (int k = 0; k < 3; ++k) frame.camera[k] = float(cameraPosition[k]);
+  return true;
+}
+
+bool vtkLucentPass::RenderLightDepth(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
+                                     FrameSetup& frame) {
+  Internals& I = *this->Impl;
+  vtkOpenGLState* state = window->GetState();
+  const glm::dvec3 centre(surface->GetCentre()[0], surface->GetCentre()[1],
+                          surface->GetCentre()[2]);
+  const double radius = surface->GetRadius();
+  const glm::dvec3 up =
+      std::abs(frame.towardLight.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+  frame.worldToLight =
+      glm::mat4(glm::ortho(-radius, radius, -radius, radius, 0.5 * radius, 3.5 * radius) *
+                glm::lookAt(centre + 2.0 * radius * frame.towardLight, centre, up));
+  beginDrawing(state, I.lightFbo, {}, I.lightDepth, frame.shadowSize, frame.shadowSize);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LESS);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
+      I.lightDepthVs.c_str(), I.lightDepthFs.c_str(), "");
+  if (program) {
+    program->SetUniformMatrix4x4("worldToLight", glm::value_ptr(frame.worldToLight));
+    surface->Draw(program, vtkLucentSurface::LightDepth);
+  }
+  endDrawing(I.lightFbo);
+  if (!program) this->ReportError("vtkLucentPass: the light-depth shader did not compile");
+  return program != nullptr;
+}
+
+bool vtkLucentPass::RenderAtlasIrradiance(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
+                                          const FrameSetup& frame) {
+  Internals& I = *this->Impl;
+  vtkOpenGLState* state = window->GetState();
+  beginDrawing(state, I.atlasFbo, {I.powerAtlas, I.positionAtlas}, nullptr, frame.atlasSize,
+               frame.atlasSize);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglClearColor(0, 0, 0, 0);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  vtkShaderProgram* program =
+      window->GetShaderCache()->ReadyShaderProgram(I.atlasVs.c_str(), I.atlasFs.c_str(), "");
+  if (program) {
+    I.lightDepth->Activate();
+    program->SetUniformi("lightDepth", I.lightDepth->GetTextureUnit());
+    program->SetUniformMatrix4x4("worldToLight",
+                                 const_cast<float*>(glm::value_ptr(frame.worldToLight)));
+    const float toward[3] = {float(frame.towardLight.x), float(frame.towardLight.y),
+                             float(frame.towardLight.z)};
+    program->SetUniform3f("towardLight", toward);
+    program->SetUniform3f("lightIrradiance", frame.irradiance);
+    program->SetUniformf("eta", frame.eta);
+    program->SetUniformf("shadowBias", 1.0f / float(frame.shadowSize));
+    surface->Draw(program, vtkLucentSurface::Atlas);
+    I.lightDepth->Deactivate();
+  }
+  endDrawing(I.atlasFbo);
+  if (!program) {
+    this->ReportError("vtkLucentPass: the atlas shader did not compile");
+    return false;
+  }
+  I.powerAtlas->Activate();
+  glGenerateMipmap(GL_TEXTURE_2D);
+  I.powerAtlas->Deactivate();
+  return true;
+}
+
+bool vtkLucentPass::DrawImportanceSamples(vtkOpenGLRenderWindow* window, const FrameSetup& frame) {
+  Internals& I = *this->Impl;
+  if (!I.samplesQuad) {
+    I.samplesQuad = new vtkOpenGLQuadHelper(
+        window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
+        lucent::glsl::kMipIcdfSamplesFrag, "");
+  } else {
+    window->GetShaderCache()->ReadyShaderProgram(I.samplesQuad->Program);
+  }
+  if (!I.samplesQuad->Program || !I.samplesQuad->Program->GetCompiled()) {
+    this->ReportError("vtkLucentPass: the sampling shader did not compile");
+    return false;
+  }
+  beginDrawing(window->GetState(), I.samplesFbo, {I.samplePosition, I.sampleWeight}, nullptr,
+               frame.samplesPerRow, frame.samplesPerRow);
+  I.powerAtlas->Activate();
+  I.positionAtlas->Activate();
+  vtkShaderProgram* program = I.samplesQuad->Program;
+  program->SetUniformi("powerAtlas", I.powerAtlas->GetTextureUnit());
+  program->SetUniformi("positionAtlas", I.positionAtlas->GetTextureUnit());
+  program->SetUniformi("topLevel", frame.topLevel);
+  program->SetUniformi("sampleCount", this->Samples);
+  program->SetUniformi("samplesPerRow", frame.samplesPerRow);
+  const float rotation[2] = {0.5f / float(this->Samples), 0.0f};
+  program->SetUniform2f("rotation", rotation);
+  I.samplesQuad->Render();
+  I.positionAtlas->Deactivate();
+  I.powerAtlas->Deactivate();
+  endDrawing(I.samplesFbo);
+  return true;
+}
+
+bool vtkLucentPass::ShadeSurface(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
+                                 const FrameSetup& frame, int width, int height) {
+  Internals& I = *this->Impl;
+  vtkOpenGLState* state = window->GetState();
+  beginDrawing(state, I.translucentFbo,
+               {I.translucentRadiance, I.translucentPosition, I.translucentNormal},
+               I.translucentDepth, width, height);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LESS);
+  state->vtkglDepthMask(GL_TRUE);
+  vtkShaderProgram* program =
+      window->GetShaderCache()->ReadyShaderProgram(I.shadeVs.c_str(), I.shadeFs.c_str(), "");
+  if (program) {
+    I.samplePosition->Activate();
+    I.sampleWeight->Activate();
+    program->SetUniformi("samplePosition", I.samplePosition->GetTextureUnit());
+    program->SetUniformi("sampleWeight", I.sampleWeight->GetTextureUnit());
+    program->SetUniformi("sampleCount", this->Samples);
+    program->SetUniformi("samplesPerRow", frame.samplesPerRow);
+    program->SetUniformf("mmPerUnit", float(surface->GetMillimetresPerUnit()));
+    program->SetUniform3f("cameraPosition", frame.camera);
+    program->SetUniformf("eta", frame.eta);
+    program->SetUniform3f("dipole.sigmaTr", frame.sigmaTr);
+    program->SetUniform3f("dipole.zr", frame.zr);
+    program->SetUniform3f("dipole.zv", frame.zv);
+    program->SetUniform3f("dipole.alphaPrime", frame.alphaPrime);
+    program->SetUniformMatrix("worldToClip", frame.worldToClip);
+    surface->Draw(program, vtkLucentSurface::Shade);
+    I.sampleWeight->Deactivate();
+    I.samplePosition->Deactivate();
+  }
+  endDrawing(I.translucentFbo);
+  if (!program) this->ReportError("vtkLucentPass: the shading shader did not compile");
+  return program != nullptr;
+}
+
+bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width,
+                                int height) {
+  Internals& I = *this->Impl;
+  vtkRenderer* renderer = s->GetRenderer();
+  this->ClearTranslucentTargets(window->GetState(), width,
+                                height);  // empty even when nothing is translucent
+  FrameSetup frame;
+  if (!this->SetUpFrame(renderer, frame)) return false;
 
   std::map<vtkActor*, vtkSmartPointer<vtkLucentSurface>> seen;
   vtkPropCollection* props = renderer->GetViewProps();
@@ -289,139 +483,22 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
   props->InitTraversal(it);
   for (vtkProp* prop = props->GetNextProp(it); prop; prop = props->GetNextProp(it)) {
     auto* actor = vtkActor::SafeDownCast(prop);
-    if (!actor || !actor->GetVisibility() || !actor->GetMapper() || actor->HasTranslucentPolygonalGeometry()) continue;
+    if (!actor || !actor->GetVisibility() || !actor->GetMapper() ||
+        actor->HasTranslucentPolygonalGeometry())
+      continue;
     auto found = I.surfaces.find(actor);
     vtkSmartPointer<vtkLucentSurface> surface =
         found != I.surfaces.end() ? found->second : vtkSmartPointer<vtkLucentSurface>::New();
     seen[actor] = surface;
     std::string error;
-    if (!surface->Update(actor, this->SizeMm, atlasSize, error)) continue;  // lines, points: not ours
+    if (!surface->Update(actor, this->SizeMm, frame.atlasSize, error))
+      continue;  // lines, points: not ours
     ++this->TranslucentActorCount;
-
-    // Stage 0: depth from the light, orthographic over the object's bounding sphere.
-    const glm::dvec3 centre(surface->GetCentre()[0], surface->GetCentre()[1], surface->GetCentre()[2]);
-    const double radius = surface->GetRadius();
-    const glm::dvec3 up = std::abs(towardLight.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
-    glm::mat4 worldToLight = glm::mat4(glm::ortho(-radius, radius, -radius, radius, 0.5 * radius, 3.5 * radius) *
-                                       glm::lookAt(centre + 2.0 * radius * towardLight, centre, up));
-    I.lightFbo->SaveCurrentBindingsAndBuffers();
-    I.lightFbo->Bind();
-    I.lightFbo->AddDepthAttachment(I.lightDepth);
-    I.lightFbo->DeactivateDrawBuffers();
-    state->vtkglViewport(0, 0, shadowSize, shadowSize);
-    state->vtkglScissor(0, 0, shadowSize, shadowSize);
-    state->vtkglEnable(GL_DEPTH_TEST);
-    state->vtkglDepthFunc(GL_LESS);
-    state->vtkglDepthMask(GL_TRUE);
-    state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-    vtkShaderProgram* depthProgram =
-        window->GetShaderCache()->ReadyShaderProgram(I.lightDepthVs.c_str(), I.lightDepthFs.c_str(), "");
-    if (!depthProgram) {
-      endDrawing(I.lightFbo);
-      this->ReportError("vtkLucentPass: the light-depth shader did not compile");
+    if (!this->RenderLightDepth(window, surface, frame) ||
+        !this->RenderAtlasIrradiance(window, surface, frame) ||
+        !this->DrawImportanceSamples(window, frame) ||
+        !this->ShadeSurface(window, surface, frame, width, height))
       return false;
-    }
-    depthProgram->SetUniformMatrix4x4("worldToLight", glm::value_ptr(worldToLight));
-    surface->Draw(depthProgram, vtkLucentSurface::LightDepth);
-    endDrawing(I.lightFbo);
-
-    // Stage 1: E' into the atlas (Eq. 4-7), and the position map.
-    I.atlasFbo->SaveCurrentBindingsAndBuffers();
-    I.atlasFbo->Bind();
-    I.atlasFbo->AddColorAttachment(0, I.powerAtlas);
-    I.atlasFbo->AddColorAttachment(1, I.positionAtlas);
-    I.atlasFbo->ActivateDrawBuffers(2);
-    state->vtkglViewport(0, 0, atlasSize, atlasSize);
-    state->vtkglScissor(0, 0, atlasSize, atlasSize);
-    state->vtkglDisable(GL_DEPTH_TEST);
-    state->vtkglClearColor(0, 0, 0, 0);
-    state->vtkglClear(GL_COLOR_BUFFER_BIT);
-    vtkShaderProgram* atlasProgram = window->GetShaderCache()->ReadyShaderProgram(I.atlasVs.c_str(), I.atlasFs.c_str(), "");
-    if (!atlasProgram) {
-      endDrawing(I.atlasFbo);
-      this->ReportError("vtkLucentPass: the atlas shader did not compile");
-      return false;
-    }
-    I.lightDepth->Activate();
-    atlasProgram->SetUniformi("lightDepth", I.lightDepth->GetTextureUnit());
-    atlasProgram->SetUniformMatrix4x4("worldToLight", glm::value_ptr(worldToLight));
-    const float toward[3] = {float(towardLight.x), float(towardLight.y), float(towardLight.z)};
-    atlasProgram->SetUniform3f("towardLight", toward);
-    atlasProgram->SetUniform3f("lightIrradiance", irradiance);
-    atlasProgram->SetUniformf("eta", float(material->eta));
-    atlasProgram->SetUniformf("shadowBias", 1.0f / float(shadowSize));
-    surface->Draw(atlasProgram, vtkLucentSurface::Atlas);
-    I.lightDepth->Deactivate();
-    endDrawing(I.atlasFbo);
-    // The mip chain of E' is the pyramid of Fig. 2b.
-    I.powerAtlas->Activate();
-    glGenerateMipmap(GL_TEXTURE_2D);
-    I.powerAtlas->Deactivate();
-
-    // Stage 2: N samples by hierarchical warping.
-    if (!I.samplesQuad) {
-      I.samplesQuad = new vtkOpenGLQuadHelper(window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
-                                              lucent::glsl::kMipIcdfSamplesFrag, "");
-    } else {
-      window->GetShaderCache()->ReadyShaderProgram(I.samplesQuad->Program);
-    }
-    if (!I.samplesQuad->Program || !I.samplesQuad->Program->GetCompiled()) {
-      this->ReportError("vtkLucentPass: the sampling shader did not compile");
-      return false;
-    }
-    beginDrawing(state, I.samplesFbo, 0, samplesPerRow, samplesPerRow);
-    I.samplesFbo->AddColorAttachment(0, I.samplePosition);
-    I.samplesFbo->AddColorAttachment(1, I.sampleWeight);
-    I.samplesFbo->ActivateDrawBuffers(2);
-    I.powerAtlas->Activate();
-    I.positionAtlas->Activate();
-    vtkShaderProgram* samplesProgram = I.samplesQuad->Program;
-    samplesProgram->SetUniformi("powerAtlas", I.powerAtlas->GetTextureUnit());
-    samplesProgram->SetUniformi("positionAtlas", I.positionAtlas->GetTextureUnit());
-    samplesProgram->SetUniformi("topLevel", topLevel);
-    samplesProgram->SetUniformi("sampleCount", this->SampleCount);
-    samplesProgram->SetUniformi("samplesPerRow", samplesPerRow);
-    const float rotation[2] = {0.5f / float(this->SampleCount), 0.0f};
-    samplesProgram->SetUniform2f("rotation", rotation);
-    I.samplesQuad->Render();
-    I.positionAtlas->Deactivate();
-    I.powerAtlas->Deactivate();
-    endDrawing(I.samplesFbo);
-
-    // Stage 3: per-pixel sum over the samples (Eq. 10-11), depth-tested among translucent actors.
-    I.translucentFbo->SaveCurrentBindingsAndBuffers();
-    I.translucentFbo->Bind();
-    I.translucentFbo->ActivateDrawBuffers(3);
-    state->vtkglViewport(0, 0, width, height);
-    state->vtkglScissor(0, 0, width, height);
-    state->vtkglEnable(GL_DEPTH_TEST);
-    state->vtkglDepthFunc(GL_LESS);
-    state->vtkglDepthMask(GL_TRUE);
-    vtkShaderProgram* shadeProgram = window->GetShaderCache()->ReadyShaderProgram(I.shadeVs.c_str(), I.shadeFs.c_str(), "");
-    if (!shadeProgram) {
-      endDrawing(I.translucentFbo);
-      this->ReportError("vtkLucentPass: the shading shader did not compile");
-      return false;
-    }
-    I.samplePosition->Activate();
-    I.sampleWeight->Activate();
-    shadeProgram->SetUniformi("samplePosition", I.samplePosition->GetTextureUnit());
-    shadeProgram->SetUniformi("sampleWeight", I.sampleWeight->GetTextureUnit());
-    shadeProgram->SetUniformi("sampleCount", this->SampleCount);
-    shadeProgram->SetUniformi("samplesPerRow", samplesPerRow);
-    shadeProgram->SetUniformf("mmPerUnit", float(surface->GetMillimetresPerUnit()));
-    const float camera[3] = {float(cameraPosition[0]), float(cameraPosition[1]), float(cameraPosition[2])};
-    shadeProgram->SetUniform3f("cameraPosition", camera);
-    shadeProgram->SetUniformf("eta", float(material->eta));
-    shadeProgram->SetUniform3f("dipole.sigmaTr", sigmaTr);
-    shadeProgram->SetUniform3f("dipole.zr", zr);
-    shadeProgram->SetUniform3f("dipole.zv", zv);
-    shadeProgram->SetUniform3f("dipole.alphaPrime", alphaPrime);
-    shadeProgram->SetUniformMatrix("worldToClip", worldToClip);
-    surface->Draw(shadeProgram, vtkLucentSurface::Shade);
-    I.sampleWeight->Deactivate();
-    I.samplePosition->Deactivate();
-    endDrawing(I.translucentFbo);
   }
   // Actors gone from the renderer give their buffers back.
   for (auto& [actor, surface] : I.surfaces)
@@ -435,8 +512,8 @@ void vtkLucentPass::Composite(vtkOpenGLRenderWindow* window) {
   vtkOpenGLState* state = window->GetState();
   if (!I.compositeQuad) {
     const std::string fs = withSharedGlsl(lucent::glsl::kCompositeFrag);
-    I.compositeQuad = new vtkOpenGLQuadHelper(window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
-                                              fs.c_str(), "");
+    I.compositeQuad = new vtkOpenGLQuadHelper(
+        window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), "");
   } else {
     window->GetShaderCache()->ReadyShaderProgram(I.compositeQuad->Program);
   }
@@ -484,8 +561,8 @@ void vtkLucentPass::ReadBackFrame(int width, int height) {
   I.translucentFbo->RestorePreviousBindingsAndBuffers();
 }
 
-bool vtkLucentPass::GetLastFrame(int& width, int& height, std::vector<float>& radiance, std::vector<float>& position,
-                                 std::vector<float>& normal) const {
+bool vtkLucentPass::GetLastFrame(int& width, int& height, std::vector<float>& radiance,
+                                 std::vector<float>& position, std::vector<float>& normal) const {
   const Internals& I = *this->Impl;
   if (I.frameRadiance.empty()) return false;
   width = I.frameWidth;
@@ -506,7 +583,8 @@ void vtkLucentPass::Render(const vtkRenderState* s) {
   vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
-  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);  // the stages set their own; the caller's comes back
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(
+      state);  // the stages set their own; the caller's comes back
   vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
   if (!this->DelegatePass) {
     vtkWarningMacro("no delegate in vtkLucentPass: set one, e.g. a vtkRenderStepsPass");
@@ -537,13 +615,17 @@ void vtkLucentPass::ReleaseGraphicsResources(vtkWindow* w) {
   I.compositeQuad = nullptr;
   for (auto& entry : I.surfaces) entry.second->ReleaseGraphicsResources(w);
   I.surfaces.clear();
-  for (auto* fbo : {I.sceneFbo.Get(), I.translucentFbo.Get(), I.lightFbo.Get(), I.atlasFbo.Get(), I.samplesFbo.Get()})
+  for (auto* fbo : {I.sceneFbo.Get(), I.translucentFbo.Get(), I.lightFbo.Get(), I.atlasFbo.Get(),
+                    I.samplesFbo.Get()})
     if (fbo) fbo->ReleaseGraphicsResources(w);
-  for (auto* t : {I.sceneColor.Get(), I.sceneDepth.Get(), I.translucentRadiance.Get(), I.translucentPosition.Get(),
-                  I.translucentNormal.Get(), I.translucentDepth.Get(), I.lightDepth.Get(), I.powerAtlas.Get(),
-                  I.positionAtlas.Get(), I.samplePosition.Get(), I.sampleWeight.Get()})
+  for (auto* t : {I.sceneColor.Get(), I.sceneDepth.Get(), I.translucentRadiance.Get(),
+                  I.translucentPosition.Get(), I.translucentNormal.Get(), I.translucentDepth.Get(),
+                  I.lightDepth.Get(), I.powerAtlas.Get(), I.positionAtlas.Get(),
+                  I.samplePosition.Get(), I.sampleWeight.Get()})
     if (t) t->ReleaseGraphicsResources(w);
   I.sceneFbo = I.translucentFbo = I.lightFbo = I.atlasFbo = I.samplesFbo = nullptr;
-  I.sceneColor = I.sceneDepth = I.translucentRadiance = I.translucentPosition = I.translucentNormal = nullptr;
-  I.translucentDepth = I.lightDepth = I.powerAtlas = I.positionAtlas = I.samplePosition = I.sampleWeight = nullptr;
+  I.sceneColor = I.sceneDepth = I.translucentRadiance = I.translucentPosition =
+      I.translucentNormal = nullptr;
+  I.translucentDepth = I.lightDepth = I.powerAtlas = I.positionAtlas = I.samplePosition =
+      I.sampleWeight = nullptr;
 }

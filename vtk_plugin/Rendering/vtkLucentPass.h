@@ -1,21 +1,23 @@
 /// @file vtkLucentPass.h
-/// @brief Translucent (subsurface-scattering) rendering on the GPU: texture-space importance sampling
-/// (Mertens et al.'s TSIS, texture-space-importance-sampling Sec. 3) as a vtkImageProcessingPass.
+/// @brief Translucent (subsurface-scattering) rendering on the GPU: texture-space importance
+/// sampling (Mertens et al.'s TSIS, texture-space-importance-sampling Sec. 3) as a
+/// vtkImageProcessingPass.
 ///
-/// Every visible, opaque vtkActor with polygons in the renderer is shaded as one homogeneous translucent
-/// object (light does not cross from one actor to another). Per frame and per actor:
+/// Every visible, opaque vtkActor with polygons in the renderer is shaded as one homogeneous
+/// translucent object (light does not cross from one actor to another). Per frame and per actor:
 ///  0. depth of the object from the light (shadows);
-///  1. irradiance E' = E A_S / A_T rendered into the object's texture atlas, with the position map (Eq. 4-7);
+///  1. irradiance E' = E A_S / A_T rendered into the object's texture atlas, with the position map
+///  (Eq. 4-7);
 ///  2. N texels drawn in proportion to E' by descending the atlas's mip chain (Sec. 3.2, Fig. 2b);
 ///  3. every pixel sums Rd(|x_i - x_o|) w_i over the N samples, L = Ft B / pi (Eq. 10-11);
 ///  4. the translucent radiance replaces the delegate's shading where the object is visible.
-/// The light is directional: LightDirection, or else the renderer's first switched-on light (from its
-/// position towards its focal point). GLSL: shaders/ (constants generated from lucent/optics/constants.hpp). Built on a
-/// GL 3.2 core context; checked on Mesa llvmpipe.
+/// The light is directional: LightDirection, or else the renderer's first switched-on light (from
+/// its position towards its focal point). GLSL: shaders/ (constants generated from
+/// lucent/optics/constants.hpp). Built on a GL 3.2 core context; checked on Mesa llvmpipe.
 ///
 /// Usage, as with VTK's own passes:
 /// @code
-///   vtkNew<vtkLucentPass> lucent;  lucent->SetDelegatePass(cameraPass);  renderer->SetPass(lucent);
+///   vtkNew<vtkLucentPass> lucent;  lucent->SetDelegatePass(cameraPass); renderer->SetPass(lucent);
 /// @endcode
 /// or, without a pass chain, lucent->SetDelegatePass(vtkNew<vtkRenderStepsPass>()).
 #ifndef vtkLucentPass_h
@@ -24,10 +26,12 @@
 #include <string>
 #include <vector>
 
-#include "LucentRenderingModule.h"
 #include <vtkImageProcessingPass.h>
+#include "LucentRenderingModule.h"
 
+class vtkLucentSurface;
 class vtkOpenGLFramebufferObject;
+class vtkOpenGLState;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
@@ -49,21 +53,21 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   ///@}
 
   ///@{
-  /// Object size: 0 = world units are mm; > 0 = each actor is scaled so its bounding-box diagonal is this.
+  /// Object size: 0 = world units are mm; > 0 = each actor is scaled so its bounding-box diagonal
+  /// is this.
   vtkSetClampMacro(SizeMm, double, 0.0, 1.0e9);
   vtkGetMacro(SizeMm, double);
   ///@}
 
   ///@{
-  /// N of Eq. 9-11, the importance samples every pixel sums (the accuracy / time knob).
-  vtkSetClampMacro(SampleCount, int, 1, 65536);
-  vtkGetMacro(SampleCount, int);
-  ///@}
-
-  ///@{
-  /// Texels per side of the atlas (rounded up to a power of two for the mip pyramid) and of the light's
-  /// depth map.
-  vtkSetClampMacro(AtlasResolution, int, 16, 4096);
+  /// The knobs this GPU twin shares with the tsis technique (`lucent techniques`: samples,
+  /// atlas-resolution): N of Eq. 9-11, and the atlas's texels per side (rounded up to a power of
+  /// two for the mip pyramid). Their defaults and ranges are tsis's own
+  /// (lucent/technique/texture_space.hpp); values are clamped to the range. The light's depth map
+  /// resolution is the pass's own.
+  void SetSamples(int n);
+  vtkGetMacro(Samples, int);
+  void SetAtlasResolution(int texels);
   vtkGetMacro(AtlasResolution, int);
   vtkSetClampMacro(ShadowMapResolution, int, 16, 8192);
   vtkGetMacro(ShadowMapResolution, int);
@@ -83,8 +87,8 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   ///@}
 
   ///@{
-  /// Display: radiance times Exposure, then x / (1 + x) and sRGB; SurfaceWeight of the delegate's own
-  /// shading of the object is kept on top (0 = subsurface only).
+  /// Display: radiance times Exposure, then x / (1 + x) and sRGB; SurfaceWeight of the delegate's
+  /// own shading of the object is kept on top (0 = subsurface only).
   vtkSetClampMacro(Exposure, double, 0.0, 1.0e12);
   vtkGetMacro(Exposure, double);
   vtkSetClampMacro(SurfaceWeight, double, 0.0, 1.0);
@@ -92,17 +96,18 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   ///@}
 
   ///@{
-  /// Keep the last frame's per-pixel translucent radiance, world position and normal for GetLastFrame
-  /// (tests and sweeps read them back; costs a read-back per frame).
+  /// Keep the last frame's per-pixel translucent radiance, world position and normal for
+  /// GetLastFrame (tests and sweeps read them back; costs a read-back per frame).
   vtkSetMacro(KeepFrame, bool);
   vtkGetMacro(KeepFrame, bool);
   vtkBooleanMacro(KeepFrame, bool);
   ///@}
 
-  /// The frame kept by KeepFrame: width * height RGBA floats each. radiance.a = 1 where a translucent
-  /// surface is drawn; normal.a = the cosine to the camera. False when nothing was kept.
-  bool GetLastFrame(int& width, int& height, std::vector<float>& radiance, std::vector<float>& position,
-                    std::vector<float>& normal) const;
+  /// The frame kept by KeepFrame: width * height RGBA floats each. radiance.a = 1 where a
+  /// translucent surface is drawn; normal.a = the cosine to the camera. False when nothing was
+  /// kept.
+  bool GetLastFrame(int& width, int& height, std::vector<float>& radiance,
+                    std::vector<float>& position, std::vector<float>& normal) const;
 
   /// Actors shaded in the last frame, and the last problem met (empty when none).
   vtkGetMacro(TranslucentActorCount, int);
@@ -119,17 +124,34 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   struct Internals;
   Internals* Impl;
 
+  struct FrameSetup;  // the light, the material's dipole, target sizes and the camera of one frame
+
   void InitializeGraphicsResources(vtkOpenGLRenderWindow* window, int width, int height);
   void RenderDelegateWithDepth(const vtkRenderState* s, int width, int height);
+  /// Runs the four stages for every translucent actor; false when nothing translucent was drawn.
   bool ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width, int height);
+  bool SetUpFrame(vtkRenderer* renderer, FrameSetup& frame);
+  bool ResolveLight(vtkRenderer* renderer, FrameSetup& frame);
+  void ClearTranslucentTargets(vtkOpenGLState* state, int width, int height);
+  /// Stage 0: depth from the light, orthographic over the object's bounding sphere.
+  bool RenderLightDepth(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
+                        FrameSetup& frame);
+  /// Stage 1: E' into the atlas (Eq. 4-7) with the position map, and its mip chain (Fig. 2b).
+  bool RenderAtlasIrradiance(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
+                             const FrameSetup& frame);
+  /// Stage 2: N samples by hierarchical warping down the mip chain.
+  bool DrawImportanceSamples(vtkOpenGLRenderWindow* window, const FrameSetup& frame);
+  /// Stage 3: every pixel sums the samples (Eq. 10-11), depth-tested among translucent actors.
+  bool ShadeSurface(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
+                    const FrameSetup& frame, int width, int height);
   void Composite(vtkOpenGLRenderWindow* window);
   void ReadBackFrame(int width, int height);
   void ReportError(const std::string& message);
 
   std::string Material = "skin1";
   double SizeMm = 0.0;
-  int SampleCount = 256;
-  int AtlasResolution = 512;
+  int Samples;          // tsis's default
+  int AtlasResolution;  // tsis's default
   int ShadowMapResolution = 1024;
   double LightDirection[3] = {0.0, 0.0, 0.0};
   double LightIrradiance = 1.0;

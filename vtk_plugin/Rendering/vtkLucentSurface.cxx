@@ -5,9 +5,6 @@
 #include <vector>
 
 #include <vtkActor.h>
-#include <vtkCellArray.h>
-#include <vtkCompositeDataIterator.h>
-#include <vtkCompositeDataSet.h>
 #include <vtkMapper.h>
 #include <vtkMatrix4x4.h>
 #include <vtkObjectFactory.h>
@@ -15,56 +12,25 @@
 #include <vtkOpenGLVertexArrayObject.h>
 #include <vtkPolyData.h>
 #include <vtkShaderProgram.h>
-#include <vtkTriangleFilter.h>
 #include <vtk_glew.h>
 
 #include <lucent/atlas/texture_atlas.hpp>
 #include <lucent/scene/mesh.hpp>
+
+#include "lucentPolyDataMesh.h"
 
 vtkStandardNewMacro(vtkLucentSurface);
 
 namespace {
 constexpr int kFloatsPerCorner = 9;  // position 3, normal 3, atlas uv 2, area per texel 1
 
-/// The polygons of @p data (a polydata or every polydata leaf of a composite), triangulated and moved
-/// to world coordinates by @p matrix, appended to @p mesh (in world units).
-void appendTriangles(vtkDataObject* data, vtkMatrix4x4* matrix, lucent::scene::TriangleMesh& mesh) {
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data)) {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-      appendTriangles(it->GetCurrentDataObject(), matrix, mesh);
-    return;
-  }
-  auto* poly = vtkPolyData::SafeDownCast(data);
-  if (!poly || poly->GetNumberOfPolys() + poly->GetNumberOfStrips() == 0) return;
-  vtkNew<vtkTriangleFilter> triangulate;
-  triangulate->SetInputData(poly);
-  triangulate->PassVertsOff();
-  triangulate->PassLinesOff();
-  triangulate->Update();
-  vtkPolyData* tri = triangulate->GetOutput();
-  const auto base = unsigned(mesh.positions.size());
-  for (vtkIdType i = 0; i < tri->GetNumberOfPoints(); ++i) {
-    double p[4] = {0, 0, 0, 1};
-    tri->GetPoint(i, p);
-    double w[4];
-    matrix->MultiplyPoint(p, w);
-    mesh.positions.emplace_back(float(w[0] / w[3]), float(w[1] / w[3]), float(w[2] / w[3]));
-  }
-  vtkCellArray* polys = tri->GetPolys();
-  polys->InitTraversal();
-  vtkIdType n = 0;
-  const vtkIdType* ids = nullptr;
-  while (polys->GetNextCell(n, ids))
-    if (n == 3) mesh.triangles.push_back({base + unsigned(ids[0]), base + unsigned(ids[1]), base + unsigned(ids[2])});
-}
 }  // namespace
 
 vtkLucentSurface::vtkLucentSurface() = default;
 vtkLucentSurface::~vtkLucentSurface() = default;
 
-bool vtkLucentSurface::Update(vtkActor* actor, double sizeMm, int atlasResolution, std::string& error) {
+bool vtkLucentSurface::Update(vtkActor* actor, double sizeMm, int atlasResolution,
+                              std::string& error) {
   vtkMapper* mapper = actor->GetMapper();
   vtkDataObject* data = mapper ? mapper->GetInputDataObject(0, 0) : nullptr;
   if (!data) {
@@ -75,18 +41,19 @@ bool vtkLucentSurface::Update(vtkActor* actor, double sizeMm, int atlasResolutio
   actor->GetMatrix(matrix);
   const double* elements = matrix->GetData();
   if (this->Buffer && data == this->BuiltData && data->GetMTime() == this->BuiltDataTime &&
-      std::equal(elements, elements + 16, this->BuiltMatrix) && sizeMm == this->BuiltSizeMm && atlasResolution == this->BuiltResolution)
+      std::equal(elements, elements + 16, this->BuiltMatrix) && sizeMm == this->BuiltSizeMm &&
+      atlasResolution == this->BuiltResolution)
     return true;
 
-  lucent::scene::TriangleMesh world;
-  appendTriangles(data, matrix, world);
+  // Triangulated, welded, outward, in world coordinates: the conversion the filter and the CLI use
+  // too.
+  const lucent::scene::TriangleMesh world = lucent::vtkadapter::meshFromData(data, matrix).mesh;
   if (world.triangles.empty()) {
-    error = "the actor's data has no polygons (extract a surface first, e.g. Contour or Extract Surface)";
+    error =
+        "the actor's data has no polygons (extract a surface first, e.g. Contour or Extract "
+        "Surface)";
     return false;
   }
-  // Outward normals are what the irradiance needs; a mesh wound inside out is turned around.
-  if (world.signedVolume() < 0)
-    for (auto& t : world.triangles) std::swap(t.y, t.z);
 
   const lucent::scene::Bounds bounds = world.bounds();
   const double diagonal = bounds.diagonal();
@@ -117,13 +84,15 @@ bool vtkLucentSurface::Update(vtkActor* actor, double sizeMm, int atlasResolutio
   corners.reserve(world.triangles.size() * 3 * kFloatsPerCorner);
   for (std::size_t t = 0; t < world.triangles.size(); ++t) {
     // A triangle owning no texel centre still covers one texel somewhere (Eq. 7 with n_T = 1).
-    const double area = mm.triangleArea(t) / double(std::max<std::uint32_t>(atlas.texelCount[t], 1));
+    const double area =
+        mm.triangleArea(t) / double(std::max<std::uint32_t>(atlas.texelCount[t], 1));
     for (int k = 0; k < 3; ++k) {
       const unsigned v = world.triangles[t][k];
       const glm::vec3& p = world.positions[v];
       const glm::vec3& n = normals[v];
       const glm::dvec2 uv = atlas.uv[3 * t + std::size_t(k)] / double(atlas.resolution);
-      corners.insert(corners.end(), {p.x, p.y, p.z, n.x, n.y, n.z, float(uv.x), float(uv.y), float(area)});
+      corners.insert(corners.end(),
+                     {p.x, p.y, p.z, n.x, n.y, n.z, float(uv.x), float(uv.y), float(area)});
     }
   }
   if (!this->Buffer) this->Buffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
@@ -133,7 +102,8 @@ bool vtkLucentSurface::Update(vtkActor* actor, double sizeMm, int atlasResolutio
     return false;
   }
   this->CornerCount = int(world.triangles.size() * 3);
-  for (auto& program : this->BoundProgram) program = nullptr;  // attributes point into the new buffer
+  for (auto& program : this->BoundProgram)
+    program = nullptr;  // attributes point into the new buffer
 
   this->BuiltData = data;
   this->BuiltDataTime = data->GetMTime();
@@ -153,10 +123,13 @@ void vtkLucentSurface::Draw(vtkShaderProgram* program, Stage stage) {
     const int stride = kFloatsPerCorner * int(sizeof(float));
     arrays->AddAttributeArray(program, this->Buffer, "positionWC", 0, stride, VTK_FLOAT, 3, false);
     if (stage != LightDepth)
-      arrays->AddAttributeArray(program, this->Buffer, "normalWC", 3 * sizeof(float), stride, VTK_FLOAT, 3, false);
+      arrays->AddAttributeArray(program, this->Buffer, "normalWC", 3 * sizeof(float), stride,
+                                VTK_FLOAT, 3, false);
     if (stage == Atlas) {
-      arrays->AddAttributeArray(program, this->Buffer, "atlasUV", 6 * sizeof(float), stride, VTK_FLOAT, 2, false);
-      arrays->AddAttributeArray(program, this->Buffer, "areaPerTexel", 8 * sizeof(float), stride, VTK_FLOAT, 1, false);
+      arrays->AddAttributeArray(program, this->Buffer, "atlasUV", 6 * sizeof(float), stride,
+                                VTK_FLOAT, 2, false);
+      arrays->AddAttributeArray(program, this->Buffer, "areaPerTexel", 8 * sizeof(float), stride,
+                                VTK_FLOAT, 1, false);
     }
     this->BoundProgram[stage] = program;
   }

@@ -28,13 +28,15 @@ struct Capabilities {
   bool dynamicShape = false;
   ///@}
   ///@{ Where it produces radiance: any surface point (per pixel), mesh vertices, or only along
-  ///camera rays.
+  /// camera rays.
   bool perPixel = true;
   bool perVertex = true;
   bool needsCamera = false;
   ///@}
-  bool groundTruth = false;       ///< a reference other techniques are measured against
-  std::string gpuTwin;            ///< the GPU implementation of the same technique, if any
+  bool groundTruth = false;  ///< a reference other techniques are measured against
+  std::string gpuTwin;       ///< the GPU implementation of the same technique, if any
+  std::vector<std::string>
+      gpuTwinKnobs;               ///< the knobs the GPU twin takes (same names, defaults, ranges)
   std::string precomputeScaling;  ///< how prepare's cost grows, e.g. "O(A / spacing^2) samples"
   std::string frameScaling;       ///< how a frame's cost grows
 };

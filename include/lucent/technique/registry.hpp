@@ -30,6 +30,10 @@ class Registry {
           throw std::logic_error("technique '" + t.name + "': knobs " + t.knobs[i].name + " and " +
                                  t.knobs[j].name + " have the same CamelCase name");
     t.values();  // the defaults must pass their own checks
+    for (const auto& k : t.capabilities.gpuTwinKnobs)
+      if (!t.knob(k))
+        throw std::logic_error("technique '" + t.name + "': its GPU twin's knob " + k +
+                               " is not its knob");
     for (const auto& other : mAll)
       for (const auto& k : t.knobs)
         for (const auto& ok : other.knobs)

@@ -47,10 +47,11 @@ struct Sweep {
 using KnobList = std::vector<std::pair<std::string, std::string>>;
 
 struct Technique {
-  std::string name;     ///< what --method, the registry and (CamelCase) VTK properties call it
-  std::string summary;  ///< one line
-  std::string paper;    ///< the reference and the equations implemented
-  std::string requires;  ///< the library its adapter links (empty: header-only, every front end has it)
+  std::string name;      ///< what --method, the registry and (CamelCase) VTK properties call it
+  std::string summary;   ///< one line
+  std::string paper;     ///< the reference and the equations implemented
+  std::string requires;  ///< the library its adapter links (empty: header-only, every front end has
+                         ///< it)
   std::vector<KnobSpec> knobs;
   Capabilities capabilities;
   std::vector<Sweep> defaultSweep;  ///< what `lucent bench` sweeps when no --sweep is given

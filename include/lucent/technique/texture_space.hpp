@@ -23,7 +23,7 @@ namespace lucent::technique {
 namespace detail {
 
 inline std::vector<KnobSpec> atlasKnobs() {
-  return {KnobSpec::integer("atlas", 1024, 16, 8192, "atlas resolution (texels per side)",
+  return {KnobSpec::integer("atlas-resolution", 1024, 16, 8192, "atlas texels per side",
                             Phase::Prepare),
           KnobSpec::real("chart-angle", "40", 1, 80, "degrees",
                          "chart cone half-angle (smaller: more charts, less distortion)",
@@ -81,7 +81,7 @@ inline optics::Dipole<double> dipoleOf(const optics::Material& m) {
 inline atlas::TextureAtlas buildAtlas(const SceneDescription& scene, const KnobValues& knobs,
                                       Statistics& stats) {
   atlas::AtlasOptions ao;
-  ao.resolution = int(knobs.integer("atlas"));
+  ao.resolution = int(knobs.integer("atlas-resolution"));
   ao.maxNormalAngleDeg = knobs.real("chart-angle");
   atlas::TextureAtlas a = stats.timePrepare("atlas", [&] {
     try {
@@ -275,6 +275,7 @@ inline Technique tsisTechnique() {
                      detail::evaluationKnobs());
   t.capabilities = detail::textureSpaceCapabilities();
   t.capabilities.gpuTwin = "vtkLucentPass";
+  t.capabilities.gpuTwinKnobs = {"samples", "atlas-resolution"};
   t.defaultSweep = {{"samples", {"400", "1600", "6400"}}};
   t.prepare = [](const SceneDescription& scene, const KnobValues& knobs, Statistics& stats) {
     return std::make_unique<detail::Tsis>(scene, knobs, stats);

@@ -15,7 +15,8 @@
 
 namespace {
 namespace lt = lucent::technique;
-constexpr const char* kMarker = "<!-- @LUCENT_FILTER_TECHNIQUE_PROPERTIES@ -->";
+constexpr const char* kFilterMarker = "<!-- @LUCENT_FILTER_TECHNIQUE_PROPERTIES@ -->";
+constexpr const char* kViewMarker = "<!-- @LUCENT_VIEW_TECHNIQUE_PROPERTIES@ -->";
 
 std::string escape(const std::string& s) {
   std::string out;
@@ -51,21 +52,26 @@ bool fitsInt(double v) {
          v <= double(std::numeric_limits<int>::max());
 }
 
-/// The element, command and domain of one knob's property.
-std::string property(const lt::Technique& t, const lt::KnobSpec& k) {
-  const std::string name = lt::propertyName(t, k), qualified = lt::qualifiedName(t, k);
+/// The element, command and domain of one knob's property. A filter property passes the qualified
+/// knob name first (initial_string) and shows only for its technique; a view property has a setter
+/// of its own.
+std::string property(const lt::Technique& t, const lt::KnobSpec& k, bool forFilter) {
+  const std::string name = forFilter ? lt::propertyName(t, k) : "Lucent" + lt::camelCase(k.name);
   const bool integer = k.kind == lt::KnobKind::Integer && fitsInt(k.min) && fitsInt(k.max);
   const bool real = k.kind == lt::KnobKind::Real || (k.kind == lt::KnobKind::Integer && !integer);
   const char* element = integer ? "IntVectorProperty"
                         : real  ? "DoubleVectorProperty"
                                 : "StringVectorProperty";
-  const char* command = integer ? "SetKnobInteger" : real ? "SetKnobReal" : "SetKnob";
+  const std::string command = forFilter ? (integer ? "SetKnobInteger"
+                                           : real  ? "SetKnobReal"
+                                                   : "SetKnob")
+                                        : "Set" + name;
   std::ostringstream o;
   // No label: ParaView's Python names follow the label, and must be the property names front ends
   // use.
-  o << "      <" << element << " name=\"" << name << "\" command=\"" << command
-    << "\" initial_string=\"" << escape(qualified)
-    << "\" number_of_elements=\"1\" default_values=\"" << escape(k.defaultValue) << "\">\n";
+  o << "      <" << element << " name=\"" << name << "\" command=\"" << command << "\" ";
+  if (forFilter) o << "initial_string=\"" << escape(lt::qualifiedName(t, k)) << "\" ";
+  o << "number_of_elements=\"1\" default_values=\"" << escape(k.defaultValue) << "\">\n";
   if (integer || real) {
     o << "        <" << (integer ? "IntRangeDomain" : "DoubleRangeDomain")
       << " name=\"range\" min=\"" << number(k.min) << "\"";
@@ -80,29 +86,47 @@ std::string property(const lt::Technique& t, const lt::KnobSpec& k) {
   std::string doc = k.help;
   if (k.kind != lt::KnobKind::Text)
     doc += " (" + k.rangeText() + (k.unit.empty() ? "" : " " + k.unit) + ")";
-  o << "        <Documentation>" << escape(doc) << "</Documentation>\n"
-    << "        <Hints>\n          <PropertyWidgetDecorator type=\"GenericDecorator\" "
-       "mode=\"visibility\" "
-       "property=\"Technique\" value=\""
-    << escape(t.name) << "\" />\n        </Hints>\n      </" << element << ">\n";
+  o << "        <Documentation>" << escape(doc) << "</Documentation>\n";
+  if (forFilter)
+    o << "        <Hints>\n          <PropertyWidgetDecorator type=\"GenericDecorator\" "
+         "mode=\"visibility\" "
+      << "property=\"Technique\" value=\"" << escape(t.name) << "\" />\n        </Hints>\n";
+  o << "      </" << element << ">\n";
   return o.str();
 }
 
-std::string techniqueProperties(const lt::Registry& registry) {
+/// The filter's Technique choice and every offered technique's knob properties.
+std::string filterProperties(const lt::Registry& registry) {
   std::ostringstream o;
   o << "      <StringVectorProperty name=\"Technique\" command=\"SetTechnique\" "
        "number_of_elements=\"1\" "
-       "default_values=\"reference\">\n        <StringListDomain name=\"list\">\n";
+    << "default_values=\"reference\">\n        <StringListDomain name=\"list\">\n";
   for (const auto& t : registry.all())
     if (lt::shadesVertices(t)) o << "          <String value=\"" << escape(t.name) << "\" />\n";
   o << "        </StringListDomain>\n        <Documentation>The technique (lucent techniques lists "
-       "them with their "
-       "papers and capabilities).</Documentation>\n      </StringVectorProperty>\n";
+       "them with "
+    << "their papers and capabilities).</Documentation>\n      </StringVectorProperty>\n";
   for (const auto& t : registry.all())
     if (lt::shadesVertices(t))
       for (const auto& k : t.knobs)
-        if (lt::isProperty(k)) o << property(t, k);
+        if (lt::isProperty(k)) o << property(t, k, true);
   return o.str();
+}
+
+/// The view's properties for the knobs its GPU pass shares with the technique it is the twin of.
+std::string viewProperties(const lt::Registry& registry) {
+  std::ostringstream o;
+  for (const auto& t : registry.all())
+    if (t.capabilities.gpuTwin == "vtkLucentPass")
+      for (const auto& name : t.capabilities.gpuTwinKnobs) o << property(t, *t.knob(name), false);
+  return o.str();
+}
+
+bool replaceMarker(std::string& xml, const std::string& marker, const std::string& with) {
+  const auto at = xml.find(marker);
+  if (at == std::string::npos) return false;
+  xml.replace(at, marker.size(), with);
+  return true;
 }
 }  // namespace
 
@@ -115,14 +139,14 @@ int main(int argc, char** argv) {
   std::stringstream text;
   text << in.rdbuf();
   std::string xml = text.str();
-  const auto at = xml.find(kMarker);
-  if (!in || at == std::string::npos) {
-    std::cerr << "generate_plugin_xml: " << argv[1] << " has no " << kMarker << "\n";
-    return 2;
-  }
   lt::Registry registry;
   lt::addCoreTechniques(registry);  // the registry vtkLucentFilter::Techniques() holds
-  xml.replace(at, std::string(kMarker).size(), techniqueProperties(registry));
+  if (!in || !replaceMarker(xml, kFilterMarker, filterProperties(registry)) ||
+      !replaceMarker(xml, kViewMarker, viewProperties(registry))) {
+    std::cerr << "generate_plugin_xml: " << argv[1] << " lacks " << kFilterMarker << " or "
+              << kViewMarker << "\n";
+    return 2;
+  }
   std::ofstream out(argv[2]);
   out << xml;
   return out ? 0 : 1;

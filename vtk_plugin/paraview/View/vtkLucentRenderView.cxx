@@ -39,8 +39,8 @@ void vtkLucentRenderView::SetLucentSizeMm(double mm) {
   this->Pass->SetSizeMm(mm);
   this->Modified();
 }
-void vtkLucentRenderView::SetLucentSampleCount(int n) {
-  this->Pass->SetSampleCount(n);
+void vtkLucentRenderView::SetLucentSamples(int n) {
+  this->Pass->SetSamples(n);
   this->Modified();
 }
 void vtkLucentRenderView::SetLucentAtlasResolution(int texels) {

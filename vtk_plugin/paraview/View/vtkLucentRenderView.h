@@ -1,12 +1,13 @@
 /// @file vtkLucentRenderView.h
-/// @brief ParaView's render view with vtkLucentPass as its image-processing pass: every opaque surface
-/// shown in it is rendered as a translucent material (ParaView's view hosts one vtkImageProcessingPass,
-/// through its synchronized renderer). The Lucent* properties forward to the pass.
+/// @brief ParaView's render view with vtkLucentPass as its image-processing pass: every opaque
+/// surface shown in it is rendered as a translucent material (ParaView's view hosts one
+/// vtkImageProcessingPass, through its synchronized renderer). The Lucent* properties forward to
+/// the pass.
 #ifndef vtkLucentRenderView_h
 #define vtkLucentRenderView_h
 
-#include "LucentParaViewViewModule.h"
 #include <vtkPVRenderView.h>
+#include "LucentParaViewViewModule.h"
 
 class vtkLucentPass;
 
@@ -20,7 +21,7 @@ class LUCENTPARAVIEWVIEW_EXPORT vtkLucentRenderView : public vtkPVRenderView {
   void SetLucentEnabled(bool enabled);
   void SetLucentMaterial(const char* name);
   void SetLucentSizeMm(double mm);
-  void SetLucentSampleCount(int n);
+  void SetLucentSamples(int n);
   void SetLucentAtlasResolution(int texels);
   void SetLucentLightDirection(double x, double y, double z);
   void SetLucentLightIrradiance(double e);
