@@ -23,3 +23,9 @@ if [ -x build/lucent ]; then
 fi
 xvfb-run -a pvbatch tests/paraview/test_lucent_plugin.py "$plugin" build-paraview/screenshots "${techniques[@]}"
 xvfb-run -a pvbatch examples/paraview_translucent.py "$plugin" build-paraview/screenshots/example.png
+# Data-parallel: the same surface split over 2 MPI ranks must give the one-process result.
+mpi=(mpiexec -n 2)
+[ "$(id -u)" -eq 0 ] && mpi+=(--allow-run-as-root)
+xvfb-run -a pvbatch tests/paraview/test_lucent_mpi.py "$plugin" build-paraview/mpi-1.csv
+xvfb-run -a "${mpi[@]}" pvbatch --mpi tests/paraview/test_lucent_mpi.py "$plugin" build-paraview/mpi-2.csv \
+  build-paraview/mpi-1.csv

@@ -52,6 +52,15 @@ inline vtkSmartPointer<vtkPolyData> weldedTriangles(vtkPolyData* poly) {
   return out;
 }
 
+inline vtkSmartPointer<vtkCellArray> polysOf(const scene::TriangleMesh& mesh) {
+  auto polys = vtkSmartPointer<vtkCellArray>::New();
+  for (const auto& t : mesh.triangles) {
+    const vtkIdType ids[3] = {vtkIdType(t.x), vtkIdType(t.y), vtkIdType(t.z)};
+    polys->InsertNextCell(3, ids);
+  }
+  return polys;
+}
+
 inline void collectLeaves(vtkDataObject* data, std::vector<vtkPolyData*>& leaves) {
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(data)) {
     vtkSmartPointer<vtkCompositeDataIterator> it;
@@ -66,12 +75,15 @@ inline void collectLeaves(vtkDataObject* data, std::vector<vtkPolyData*>& leaves
 }  // namespace detail
 
 /// @param matrix moves the points (an actor's matrix); null keeps them.
-inline PolyDataMesh meshFromData(vtkDataObject* data, vtkMatrix4x4* matrix = nullptr) {
+/// @param orient turn an inside-out surface outward (not for one piece of a distributed surface,
+/// whose
+///        volume means nothing: the whole surface decides).
+inline PolyDataMesh meshFromData(vtkDataObject* data, vtkMatrix4x4* matrix = nullptr,
+                                 bool orient = true) {
   std::vector<vtkPolyData*> leaves;
   detail::collectLeaves(data, leaves);
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> polys;
   PolyDataMesh out;
   std::vector<vtkSmartPointer<vtkPolyData>> welded;
   for (vtkPolyData* leaf : leaves) welded.push_back(detail::weldedTriangles(leaf));
@@ -96,13 +108,9 @@ inline PolyDataMesh meshFromData(vtkDataObject* data, vtkMatrix4x4* matrix = nul
         out.mesh.triangles.push_back(
             {unsigned(base + ids[0]), unsigned(base + ids[1]), unsigned(base + ids[2])});
   }
-  if (out.mesh.signedVolume() < 0) {
+  if (orient && out.mesh.signedVolume() < 0) {
     out.flipped = true;
     for (auto& t : out.mesh.triangles) std::swap(t.y, t.z);
-  }
-  for (const auto& t : out.mesh.triangles) {
-    const vtkIdType ids[3] = {vtkIdType(t.x), vtkIdType(t.y), vtkIdType(t.z)};
-    polys->InsertNextCell(3, ids);
   }
   out.triangles = vtkSmartPointer<vtkPolyData>::New();
   if (welded.size() == 1 && !matrix) {
@@ -113,8 +121,15 @@ inline PolyDataMesh meshFromData(vtkDataObject* data, vtkMatrix4x4* matrix = nul
   } else {
     out.triangles->SetPoints(points);
   }
-  out.triangles->SetPolys(polys);
+  out.triangles->SetPolys(detail::polysOf(out.mesh));
   return out;
+}
+
+/// Reverses the winding of every triangle, in the mesh and in its VTK data.
+inline void flip(PolyDataMesh& surface) {
+  for (auto& t : surface.mesh.triangles) std::swap(t.y, t.z);
+  surface.triangles->SetPolys(detail::polysOf(surface.mesh));
+  surface.flipped = !surface.flipped;
 }
 
 }  // namespace lucent::vtkadapter

@@ -8,6 +8,7 @@
 #include <vtkFloatArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkMultiProcessController.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -20,6 +21,7 @@
 #include <lucent/technique/core_techniques.hpp>
 
 #include "lucentPolyDataMesh.h"
+#include "lucentSurfaceGather.h"
 #include "vtkLucentRayCaster.h"
 
 vtkStandardNewMacro(vtkLucentFilter);
@@ -87,7 +89,10 @@ lt::Registry& vtkLucentFilter::Techniques() {
   return registry;
 }
 
-vtkLucentFilter::vtkLucentFilter() = default;
+vtkLucentFilter::vtkLucentFilter() {
+  this->SetController(vtkMultiProcessController::GetGlobalController());
+}
+vtkLucentFilter::~vtkLucentFilter() { this->SetController(nullptr); }
 
 void vtkLucentFilter::SetMaterial(const char* name) {
   const std::string value = name ? name : "";
@@ -157,72 +162,131 @@ void vtkLucentFilter::PrintSelf(ostream& os, vtkIndent indent) {
   for (const auto& [name, value] : this->Knobs) os << indent << name << ": " << value << "\n";
 }
 
+namespace {}  // namespace
+
+/// What a run is asked for, checked before any work (the same on every rank).
+struct vtkLucentFilter::Request {
+  lucent::optics::Material material;
+  const lt::Technique* technique = nullptr;
+  lt::KnobValues knobs;
+  glm::dvec3 towardLight{0, 0, 1};
+};
+
+namespace {
+/// The surface this rank outputs, and the whole surface every rank shades from (the same one when
+/// the filter runs in one process).
+struct Surfaces {
+  lucent::vtkadapter::PolyDataMesh local, whole;
+  std::vector<vtkIdType> wholeIndex;  ///< for each local point, its point in `whole`
+};
+
+Surfaces surfacesOf(vtkPolyData* input, vtkMultiProcessController* controller) {
+  namespace va = lucent::vtkadapter;
+  Surfaces s;
+  const bool distributed = controller && controller->GetNumberOfProcesses() > 1;
+  s.local = va::meshFromData(input, nullptr, /*orient=*/!distributed);
+  if (!distributed) {
+    s.whole = s.local;
+    s.wholeIndex.resize(s.local.mesh.positions.size());
+    for (std::size_t i = 0; i < s.wholeIndex.size(); ++i) s.wholeIndex[i] = vtkIdType(i);
+    return s;
+  }
+  // Every rank takes part in the all-gather, an empty piece too.
+  s.whole = va::meshFromData(va::gatherTriangles(controller, s.local.triangles));
+  if (s.whole.flipped) va::flip(s.local);  // the whole surface decides the orientation
+  s.wholeIndex = va::matchPoints(s.local.triangles, s.whole.triangles);
+  return s;
+}
+
+/// The whole surface in millimetres (scaled about the origin to SizeMm, or as given) and its ray
+/// caster.
+vtkSmartPointer<vtkPolyData> scaleToMillimetres(lucent::scene::TriangleMesh& mesh,
+                                                vtkCellArray* polys, double sizeMm) {
+  const double diagonal = mesh.bounds().diagonal();
+  if (!(diagonal > 0) || !std::isfinite(diagonal))
+    throw lt::RequestError("The input has zero or non-finite extent");
+  const double scale = sizeMm > 0 ? sizeMm / diagonal : 1.0;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(vtkIdType(mesh.positions.size()));
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    mesh.positions[i] = glm::vec3(glm::dvec3(mesh.positions[i]) * scale);
+    points->SetPoint(vtkIdType(i), mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z);
+  }
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->SetPoints(points);
+  out->SetPolys(polys);
+  return out;
+}
+
+/// The whole surface's vertex points that are this rank's own points, in its order.
+lt::ShadeRequest localRequest(const lucent::scene::TriangleMesh& whole,
+                              const std::vector<vtkIdType>& wholeIndex) {
+  const lt::ShadeRequest all = lt::vertexRequest(whole);
+  lt::ShadeRequest r;
+  r.vertices = true;
+  for (const vtkIdType i : wholeIndex) {
+    if (i < 0) throw std::logic_error("a point of this piece is not on the gathered surface");
+    r.points.push_back(all.points[std::size_t(i)]);
+  }
+  return r;
+}
+}  // namespace
+
+vtkLucentFilter::Request vtkLucentFilter::CheckRequest() const {
+  Request r;
+  const auto material = lucent::optics::findMaterial(this->Material);
+  if (!material)
+    throw lt::RequestError(
+        "Material '" + this->Material +
+        "' is not a measured material; use one of: " + lucent::optics::measuredMaterialNames());
+  r.material = *material;
+  r.technique = &Techniques().get(this->Technique);
+  if (!lt::shadesVertices(*r.technique))
+    throw lt::RequestError(
+        "technique '" + r.technique->name + "' does not shade vertices; the filter offers: " +
+        Techniques().names([](const lt::Technique& t) { return lt::shadesVertices(t); }));
+  lt::KnobList given;
+  const std::string prefix = r.technique->name + ".";
+  for (const auto& [name, value] : this->Knobs)
+    if (name.compare(0, prefix.size(), prefix) == 0)
+      given.emplace_back(name.substr(prefix.size()), value);
+  r.knobs = r.technique->values(given);
+  const glm::dvec3 toward(this->LightDirection[0], this->LightDirection[1],
+                          this->LightDirection[2]);
+  const double length = glm::length(toward);
+  if (!(length > 0) || !std::isfinite(length))
+    throw lt::RequestError(
+        "LightDirection must be a finite, non-zero direction towards the light, e.g. 0 0 1");
+  r.towardLight = toward / length;
+  return r;
+}
+
 int vtkLucentFilter::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                  vtkInformationVector* outputVector) {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   if (!input || !output) return 0;
   try {
-    // Everything the request asks for is checked before any work.
-    const auto material = lucent::optics::findMaterial(this->Material);
-    if (!material)
-      throw lt::RequestError(
-          "Material '" + this->Material +
-          "' is not a measured material; use one of: " + lucent::optics::measuredMaterialNames());
-    const lt::Technique& technique = Techniques().get(this->Technique);
-    if (!lt::shadesVertices(technique))
-      throw lt::RequestError(
-          "technique '" + technique.name + "' does not shade vertices; the filter offers: " +
-          Techniques().names([](const lt::Technique& t) { return lt::shadesVertices(t); }));
-    lt::KnobList given;
-    const std::string prefix = technique.name + ".";
-    for (const auto& [name, value] : this->Knobs)
-      if (name.compare(0, prefix.size(), prefix) == 0)
-        given.emplace_back(name.substr(prefix.size()), value);
-    const lt::KnobValues knobs = technique.values(given);
-    const double lightLength = std::sqrt(this->LightDirection[0] * this->LightDirection[0] +
-                                         this->LightDirection[1] * this->LightDirection[1] +
-                                         this->LightDirection[2] * this->LightDirection[2]);
-    if (!(lightLength > 0) || !std::isfinite(lightLength))
-      throw lt::RequestError(
-          "LightDirection must be a finite, non-zero direction towards the light, e.g. 0 0 1");
-
-    lucent::vtkadapter::PolyDataMesh surface = lucent::vtkadapter::meshFromData(input);
-    if (surface.mesh.triangles.empty())
+    const Request request = this->CheckRequest();  // before any work
+    Surfaces surfaces = surfacesOf(input, this->Controller);
+    if (surfaces.whole.mesh.triangles.empty())
       throw lt::RequestError(
           "The input has no polygons; apply the filter to a closed surface (for an image or "
-          "volume, "
-          "extract one first, e.g. Contour or Extract Surface)");
-    // The mesh in millimetres: as given, or scaled about the origin to SizeMm. The output keeps the
-    // input's coordinates (it must line up with the user's other data); only the computation is
-    // scaled.
-    const double diagonal = surface.mesh.bounds().diagonal();
-    if (!(diagonal > 0) || !std::isfinite(diagonal))
-      throw lt::RequestError("The input has zero or non-finite extent");
-    const double scale = this->SizeMm > 0 ? this->SizeMm / diagonal : 1.0;
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(vtkIdType(surface.mesh.positions.size()));
-    for (std::size_t i = 0; i < surface.mesh.positions.size(); ++i) {
-      surface.mesh.positions[i] = glm::vec3(glm::dvec3(surface.mesh.positions[i]) * scale);
-      const glm::vec3& p = surface.mesh.positions[i];
-      points->SetPoint(vtkIdType(i), p.x, p.y, p.z);
-    }
-    vtkNew<vtkPolyData> millimetres;
-    millimetres->SetPoints(points);
-    millimetres->SetPolys(surface.triangles->GetPolys());
-    const vtkLucentRayCaster caster(millimetres);
-    output->ShallowCopy(surface.triangles);
-
+          "volume, extract one first, e.g. Contour or Extract Surface)");
+    // The output keeps the input's coordinates (it must line up with the user's other data); only
+    // the computation is in millimetres.
+    output->ShallowCopy(surfaces.local.triangles);
     lt::SceneDescription scene;
     scene.meshName = "the filter's input";
-    scene.mesh = std::move(surface.mesh);
+    scene.mesh = std::move(surfaces.whole.mesh);
+    const auto millimetres =
+        scaleToMillimetres(scene.mesh, surfaces.whole.triangles->GetPolys(), this->SizeMm);
+    const vtkLucentRayCaster caster(millimetres);
     scene.vertexNormals = scene.mesh.vertexNormals();
-    scene.medium.material = *material;
-    const glm::dvec3 toLight =
-        glm::dvec3(this->LightDirection[0], this->LightDirection[1], this->LightDirection[2]);
+    scene.medium.material = request.material;
     scene.lights = {
-        lucent::scene::DirectionalLight{toLight / lightLength, glm::dvec3(this->LightIrradiance)}};
+        lucent::scene::DirectionalLight{request.towardLight, glm::dvec3(this->LightIrradiance)}};
     scene.caster = &caster;
     scene.parallelFor = smpFor;
     // Progress from the calling thread only (VTK's events are not thread-safe); each stage moves
@@ -235,17 +299,13 @@ int vtkLucentFilter::RequestData(vtkInformation*, vtkInformationVector** inputVe
       if (name != stage) stage = name, ++stages;
       this->UpdateProgress(1 - std::pow(0.5, stages - 1) * (1 - 0.5 * std::clamp(f, 0.0, 1.0)));
     };
-    const lt::ShadeRequest request = lt::vertexRequest(scene.mesh);
-    const lt::Rendered result = Techniques().render(technique, scene, knobs, request);
-    for (const auto& w : result.stats.warnings) vtkWarningMacro(<< technique.name << ": " << w);
+    const lt::ShadeRequest shade = localRequest(scene.mesh, surfaces.wholeIndex);
+    const lt::Rendered result =
+        Techniques().render(*request.technique, scene, request.knobs, shade);
+    for (const auto& w : result.stats.warnings)
+      vtkWarningMacro(<< request.technique->name << ": " << w);
     this->SampleCount = vtkIdType(result.stats.samples);
-
-    const auto& shown =
-        result.frame.radiosity.empty() ? result.frame.radiance : result.frame.radiosity;
-    if (!result.frame.radiosity.empty())
-      output->GetPointData()->AddArray(tupleArray("Radiosity", result.frame.radiosity));
-    output->GetPointData()->AddArray(tupleArray("Radiance", result.frame.radiance));
-    output->GetPointData()->SetScalars(colourArray(shown, this->Exposure));
+    this->WriteArrays(output, result);
     this->UpdateProgress(1.0);
     return 1;
   } catch (const std::exception& e) {
@@ -253,4 +313,21 @@ int vtkLucentFilter::RequestData(vtkInformation*, vtkInformationVector** inputVe
     vtkErrorMacro(<< e.what());
     return 0;
   }
+}
+
+void vtkLucentFilter::WriteArrays(vtkPolyData* output, const lt::Rendered& result) const {
+  const auto& frame = result.frame;
+  const auto& shown = frame.radiosity.empty() ? frame.radiance : frame.radiosity;
+  if (!frame.radiosity.empty())
+    output->GetPointData()->AddArray(tupleArray("Radiosity", frame.radiosity));
+  output->GetPointData()->AddArray(tupleArray("Radiance", frame.radiance));
+  output->GetPointData()->SetScalars(colourArray(shown, this->Exposure));
+}
+
+void vtkLucentFilter::SetController(vtkMultiProcessController* controller) {
+  if (this->Controller == controller) return;
+  if (controller) controller->Register(this);
+  if (this->Controller) this->Controller->UnRegister(this);
+  this->Controller = controller;
+  this->Modified();
 }

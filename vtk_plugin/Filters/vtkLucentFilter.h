@@ -24,10 +24,12 @@
 #include <vtkPolyDataAlgorithm.h>
 #include "LucentFiltersModule.h"
 
+class vtkMultiProcessController;
 #ifndef __VTK_WRAP__
 namespace lucent::technique {
 class Registry;
-}
+struct Rendered;
+}  // namespace lucent::technique
 #endif
 
 class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
@@ -92,6 +94,15 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   vtkGetMacro(Exposure, double);
   ///@}
 
+  ///@{
+  /// The processes a distributed surface is split across (pvbatch --mpi, pvserver); default the
+  /// global controller. With more than one, every rank gathers all ranks' triangles and shades its
+  /// own vertices from the whole surface (lucentSurfaceGather.h), so the result equals the
+  /// one-process result.
+  void SetController(vtkMultiProcessController* controller);
+  vtkMultiProcessController* GetController() const { return this->Controller; }
+  ///@}
+
   /// Samples of the last run, as the technique counts them (surface samples, importance samples,
   /// ...).
   vtkGetMacro(SampleCount, vtkIdType);
@@ -104,8 +115,14 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
 
  protected:
   vtkLucentFilter();
-  ~vtkLucentFilter() override = default;
+  ~vtkLucentFilter() override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+#ifndef __VTK_WRAP__
+  struct Request;  // material, technique, knobs and light of one run
+  /// Checks the material, technique, knobs and light against the technique's own description.
+  Request CheckRequest() const;
+  void WriteArrays(vtkPolyData* output, const lucent::technique::Rendered& result) const;
+#endif
 
   std::string Material = "skin1";
   std::string Technique = "reference";
@@ -115,6 +132,7 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   double LightIrradiance = 1.0;
   double Exposure = 1.0;
   vtkIdType SampleCount = 0;
+  vtkMultiProcessController* Controller = nullptr;
 
  private:
   vtkLucentFilter(const vtkLucentFilter&) = delete;
