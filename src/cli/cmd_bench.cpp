@@ -104,14 +104,15 @@ Row measure(const technique::Registry& registry, const technique::Technique& t, 
 int runBench(int argc, char** argv) {
   const technique::Registry& registry = technique::appRegistry();
   std::vector<OptionSpec> specs = sceneOptionSpecs();
-  specs.push_back({"method", "NAME", "technique whose knobs are swept (default reference)"});
+  const std::string truth = registry.defaultReference().name;
+  specs.push_back({"method", "NAME", "technique whose knobs are swept (default " + truth + ")"});
   specs.push_back({"knob", "NAME=VALUE", "a fixed knob of the swept technique", true});
   specs.push_back({"sweep", "KNOB=V1,V2,...",
                    "values of one knob; several --sweep give their product (default: the "
                    "technique's own sweep, `lucent techniques`)",
                    true});
   specs.push_back(
-      {"reference-method", "NAME", "technique of the reference image (default reference)"});
+      {"reference-method", "NAME", "technique of the reference image (default " + truth + ")"});
   specs.push_back({"reference-knob", "NAME=VALUE",
                    "knob of the reference (default: the reference technique's converged setting)",
                    true});
@@ -138,8 +139,8 @@ int runBench(int argc, char** argv) {
   const std::string xAxis = args.get("plot-x", "seconds");
   if (xAxis != "seconds" && xAxis != "samples")
     args.fail("--plot-x must be seconds or samples, not '" + xAxis + "'");
-  const technique::Technique& method = registry.get(args.get("method", "reference"));
-  const technique::Technique& refMethod = registry.get(args.get("reference-method", "reference"));
+  const technique::Technique& method = techniqueArg(registry, args, "method");
+  const technique::Technique& refMethod = techniqueArg(registry, args, "reference-method");
   Sweeps sweeps = sweepArgs(args, "sweep");
   if (sweeps.empty()) sweeps = method.defaultSweep;
   if (sweeps.empty())
@@ -158,6 +159,9 @@ int runBench(int argc, char** argv) {
   const std::vector<technique::KnobValues> baselineSettings =
       baselineMethod ? sweepSettings(*baselineMethod, {}, baselineSweeps)
                      : std::vector<technique::KnobValues>{};
+  for (const auto* list : {&settings, &baselineSettings})
+    for (const auto& k : *list) checkOutputKnobs(k);
+  checkOutputKnobs(refKnobs);
   for (const char* option : {"csv", "plot"})
     if (args.has(option)) io::checkWritable(args.get(option));
 

@@ -39,12 +39,6 @@ std::string statsJson(const Scene& scene, const technique::Technique& t,
     material.add(std::string("sigma_a_") + ch[c], m.sigmaA[c]);
     material.add(std::string("sigma_s_prime_") + ch[c], m.sigmaSPrime[c]);
   }
-  auto list = [](const std::vector<std::string>& items) {
-    std::string s = "[";
-    for (std::size_t i = 0; i < items.size(); ++i)
-      s += (i ? ", " : "") + JsonObject::quote(items[i]);
-    return s + "]";
-  };
   JsonObject stats;
   stats.add("method", t.name)
       .add("knobs", knobJson)
@@ -52,14 +46,14 @@ std::string statsJson(const Scene& scene, const technique::Technique& t,
       .add("triangles", double(scene.mesh.triangles.size()))
       .add("size_mm", scene.sizeMm)
       .add("material", material)
-      .raw("lights", list(scene.lightDescriptions))
+      .raw("lights", jsonStrings(scene.lightDescriptions))
       .add("width", double(scene.camera.width))
       .add("height", double(scene.camera.height))
       .add("wall_seconds", run.seconds)
       .add("peak_memory_mib", peakMemoryMiB())
       .add("sample_unit", run.stats.sampleUnit)
       .add("figures", figures)
-      .raw("warnings", list(run.stats.warnings));
+      .raw("warnings", jsonStrings(run.stats.warnings));
   return stats.str() + "\n";
 }
 }  // namespace
@@ -68,9 +62,9 @@ int runRender(int argc, char** argv) {
   const technique::Registry& registry = technique::appRegistry();
   std::vector<OptionSpec> specs = sceneOptionSpecs();
   for (auto& s : toneMapOptionSpecs()) specs.push_back(s);
-  specs.push_back({"method", "NAME", "rendering technique (default reference)"});
+  specs.push_back(
+      {"method", "NAME", "rendering technique (default " + registry.defaultReference().name + ")"});
   specs.push_back({"knob", "NAME=VALUE", "set one of the method's knobs", true});
-  specs.push_back({"spp", "N", "samples per pixel (the knob spp of techniques that have one)"});
   specs.push_back({"out", "FILE",
                    "output image: .exr (linear radiance, alpha = coverage) or .png (tone-mapped)",
                    true});
@@ -94,10 +88,8 @@ int runRender(int argc, char** argv) {
   for (const auto& o : outputs)
     if (!isExr(o) && !isPng(o)) args.fail("--out '" + o + "': use a .exr or .png file name");
 
-  const technique::Technique& technique = registry.get(args.get("method", "reference"));
-  technique::KnobList given = knobArgs(args, "knob");
-  if (args.has("spp")) given.emplace_back("spp", args.get("spp"));
-  const technique::KnobValues knobs = technique.values(given);
+  const technique::Technique& technique = techniqueArg(registry, args, "method");
+  const technique::KnobValues knobs = technique.values(knobArgs(args, "knob"));
   // Every output is checked before any work: nothing is written unless everything can be.
   for (const auto& o : outputs) io::checkWritable(o);
   if (args.has("stats")) io::checkWritable(args.get("stats"));

@@ -33,12 +33,6 @@ std::vector<std::pair<const char*, bool>> flags(const Capabilities& c) {
           {"ground_truth", c.groundTruth}};
 }
 
-std::string jsonList(const std::vector<std::string>& items) {
-  std::string s = "[";
-  for (std::size_t i = 0; i < items.size(); ++i) s += (i ? ", " : "") + items[i];
-  return s + "]";
-}
-
 std::string knobJson(const KnobSpec& k) {
   JsonObject o;
   o.add("name", k.name)
@@ -49,9 +43,7 @@ std::string knobJson(const KnobSpec& k) {
     o.add("min", k.min).add("max", k.max).raw("min_exclusive", k.minExclusive ? "true" : "false");
   }
   if (k.kind == technique::KnobKind::Choice) {
-    std::vector<std::string> quoted;
-    for (const auto& c : k.choices) quoted.push_back(JsonObject::quote(c));
-    o.raw("choices", jsonList(quoted));
+    o.raw("choices", jsonStrings(k.choices));
   }
   if (!k.extension.empty()) o.add("extension", k.extension);
   return o.add("unit", k.unit)
@@ -63,34 +55,33 @@ std::string knobJson(const KnobSpec& k) {
 std::string techniqueJson(const technique::Technique& t) {
   JsonObject caps;
   for (const auto& [name, value] : flags(t.capabilities)) caps.raw(name, value ? "true" : "false");
-  std::vector<std::string> twinKnobs;
-  for (const auto& k : t.capabilities.gpuTwinKnobs) twinKnobs.push_back(JsonObject::quote(k));
-  caps.raw("gpu_twin_knobs", jsonList(twinKnobs));
+  std::vector<std::string> twin;
+  for (const auto& k : t.capabilities.gpuTwinKnobs)
+    twin.push_back(JsonObject().add("knob", k.knob).add("max", k.max).str());
+  caps.raw("gpu_twin_knobs", jsonArray(twin));
   caps.add("gpu_twin", t.capabilities.gpuTwin)
       .add("precompute_scaling", t.capabilities.precomputeScaling)
       .add("frame_scaling", t.capabilities.frameScaling);
   std::vector<std::string> knobs, sweep;
   for (const auto& k : t.knobs) knobs.push_back(knobJson(k));
   for (const auto& s : t.defaultSweep) {
-    std::vector<std::string> values;
-    for (const auto& v : s.values) values.push_back(JsonObject::quote(v));
-    sweep.push_back(JsonObject().add("knob", s.knob).raw("values", jsonList(values)).str());
+    sweep.push_back(JsonObject().add("knob", s.knob).raw("values", jsonStrings(s.values)).str());
   }
   JsonObject o;
   o.add("name", t.name)
       .add("vtk_name", technique::camelCase(t.name))
       .add("summary", t.summary)
       .add("paper", t.paper)
-      .add("requires", t.requires);
+      .add("required_library", t.requiredLibrary);
   return o.add("capabilities", caps)
-      .raw("knobs", jsonList(knobs))
-      .raw("default_sweep", jsonList(sweep))
+      .raw("knobs", jsonArray(knobs))
+      .raw("default_sweep", jsonArray(sweep))
       .str();
 }
 
 std::string techniqueText(const technique::Technique& t) {
   std::string s = t.name + ": " + t.summary + "\n  paper: " + t.paper + "\n";
-  if (!t.requires.empty()) s += "  requires: " + t.requires + "\n";
+  if (!t.requiredLibrary.empty()) s += "  requires: " + t.requiredLibrary + "\n";
   s += "  can:";
   for (const auto& [name, value] : flags(t.capabilities))
     if (value) s += std::string(" ") + name;
@@ -127,7 +118,7 @@ int runTechniques(int argc, char** argv) {
   if (args.has("json")) {
     std::vector<std::string> items;
     for (const auto& t : all) items.push_back(techniqueJson(t));
-    std::cout << "{\n  \"techniques\": " << jsonList(items) << "\n}\n";
+    std::cout << "{\n  \"techniques\": " << jsonArray(items) << "\n}\n";
   } else {
     for (const auto& t : all) std::cout << techniqueText(t) << "\n";
   }

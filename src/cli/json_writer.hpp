@@ -1,10 +1,12 @@
 #pragma once
 /// @file json_writer.hpp
-/// @brief A minimal JSON object writer for stats files (flat keys; strings escaped; non-finite -> null).
+/// @brief A minimal JSON object writer for stats files (flat keys; strings escaped; non-finite ->
+/// null).
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace lucent::cli {
 
@@ -33,10 +35,14 @@ class JsonObject {
   static std::string quote(const std::string& s) {
     std::string out = "\"";
     for (char c : s) {
-      if (c == '"' || c == '\\') out += '\\', out += c;
-      else if (c == '\n') out += "\\n";
-      else if (static_cast<unsigned char>(c) < 0x20) out += ' ';
-      else out += c;
+      if (c == '"' || c == '\\')
+        out += '\\', out += c;
+      else if (c == '\n')
+        out += "\\n";
+      else if (static_cast<unsigned char>(c) < 0x20)
+        out += ' ';
+      else
+        out += c;
     }
     return out + "\"";
   }
@@ -44,5 +50,19 @@ class JsonObject {
  private:
   std::string mBody;
 };
+
+/// "[a, b]" of JSON values written already.
+inline std::string jsonArray(const std::vector<std::string>& json) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < json.size(); ++i) s += (i ? ", " : "") + json[i];
+  return s + "]";
+}
+
+/// "[\"a\", \"b\"]" of strings.
+inline std::string jsonStrings(const std::vector<std::string>& items) {
+  std::vector<std::string> quoted;
+  for (const auto& item : items) quoted.push_back(JsonObject::quote(item));
+  return jsonArray(quoted);
+}
 
 }  // namespace lucent::cli

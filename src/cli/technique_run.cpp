@@ -54,6 +54,11 @@ technique::KnobList knobArgs(const Args& args, const std::string& option) {
   return out;
 }
 
+const technique::Technique& techniqueArg(const technique::Registry& registry, const Args& args,
+                                         const std::string& option) {
+  return args.has(option) ? registry.get(args.get(option)) : registry.defaultReference();
+}
+
 void checkOutputKnobs(const technique::KnobValues& knobs) {
   for (const auto& spec : knobs.specs())
     if (spec.kind == technique::KnobKind::OutputFile && !knobs.text(spec.name).empty())
@@ -64,10 +69,13 @@ ImageRun renderImage(const technique::Registry& registry, const technique::Techn
                      Scene& scene, const technique::KnobValues& knobs, bool progress) {
   StageBars bars(progress);
   scene.progress = [&bars](const std::string& stage, double f) { bars.update(stage, f); };
+  struct Unhook {  // the callback must not outlive the bars, on any way out
+    Scene& scene;
+    ~Unhook() { scene.progress = {}; }
+  } unhook{scene};
   const technique::ShadeRequest request = technique::pixelRequest(scene.camera, scene);
   technique::Rendered r = registry.render(technique, scene, knobs, request);
   bars.finish();
-  scene.progress = {};
 
   ImageRun out;
   out.image = toImage(scene.camera, request, r.frame.radiance);

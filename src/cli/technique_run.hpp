@@ -27,6 +27,10 @@ struct ImageRun {
 /// "NAME=VALUE[,NAME=VALUE...]" from every occurrence of `option`, in order.
 technique::KnobList knobArgs(const Args& args, const std::string& option);
 
+/// The technique --option names, else the registry's default reference (its ground truth).
+const technique::Technique& techniqueArg(const technique::Registry& registry, const Args& args,
+                                         const std::string& option);
+
 /// The technique's output-file knobs that are set: each must be writable (checked now, before any
 /// work).
 void checkOutputKnobs(const technique::KnobValues& knobs);

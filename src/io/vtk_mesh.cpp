@@ -1,5 +1,7 @@
 #include "vtk_mesh.hpp"
 
+#include <utility>
+
 #include <vtkCellArray.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -8,8 +10,11 @@
 
 namespace lucent::io {
 
-scene::TriangleMesh fromPolyData(vtkPolyData* polyData) {
-  return vtkadapter::meshFromData(polyData).mesh;  // the one conversion the VTK modules use too
+scene::TriangleMesh fromPolyData(vtkPolyData* polyData, bool* flipped) {
+  vtkadapter::PolyDataMesh converted =
+      vtkadapter::meshFromData(polyData);  // as the VTK modules convert
+  if (flipped) *flipped = converted.flipped;
+  return std::move(converted.mesh);
 }
 
 vtkSmartPointer<vtkPolyData> toPolyData(const scene::TriangleMesh& mesh) {

@@ -11,7 +11,8 @@ namespace lucent::io {
 
 /// Triangulates polygons and strips, welds coincident points, drops lines and vertices, turns an
 /// inside-out mesh outward: vtk_plugin/Common/lucentPolyDataMesh.h, shared with the VTK modules.
-scene::TriangleMesh fromPolyData(vtkPolyData* polyData);
+/// @param flipped set when the mesh was wound inside out and was turned around
+scene::TriangleMesh fromPolyData(vtkPolyData* polyData, bool* flipped = nullptr);
 vtkSmartPointer<vtkPolyData> toPolyData(const scene::TriangleMesh& mesh);
 
 }  // namespace lucent::io

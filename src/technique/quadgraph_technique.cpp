@@ -151,7 +151,9 @@ class QuadGraphTechnique final : public Prepared {
     const scene::TriangleMesh nodeMesh = mPipeline.nodeSurface().mesh(mPipeline.finest());
     const auto caster = scene.makeRayCaster(nodeMesh);
     stats.figures["display_triangles"] = double(nodeMesh.triangles.size());
-    std::vector<glm::dvec3> b(request.points.size(), glm::dvec3(0));
+    // Where a pixel's ray misses the (inscribed) node surface, the value mapped to the mesh stands
+    // in.
+    std::vector<glm::dvec3> b = onMesh(scene, request, frame);
     for (std::size_t i = 0; i < b.size(); ++i) {
       const std::size_t pixel = request.pixels[i];
       const scene::Ray ray =
@@ -182,7 +184,7 @@ Technique quadgraphTechnique() {
   t.paper =
       "quadgraph-diffusion, Eq. 1-2 (diffusion), Eq. 5-9 (graph stencil and relaxation), Eq. 7 "
       "(exitance), Sec. 4.3";
-  t.requires = "TetGen (AGPL-3.0, src/tetgen)";
+  t.requiredLibrary = "TetGen (AGPL-3.0, src/tetgen)";
   const Phase P = Phase::Prepare;
   t.knobs = {
       KnobSpec::real(

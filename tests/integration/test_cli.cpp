@@ -25,7 +25,8 @@ using lucent::test::slurp;
 
 Run lucentCli(const std::string& args, const lucent::test::TempDir& dir) {
   const std::string out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string cmd = std::string(LUCENT_EXE) + " " + args + " >" + out + " 2>" + err + " </dev/null";
+  const std::string cmd =
+      std::string(LUCENT_EXE) + " " + args + " >" + out + " 2>" + err + " </dev/null";
   const int status = std::system(cmd.c_str());
   Run r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -34,10 +35,14 @@ Run lucentCli(const std::string& args, const lucent::test::TempDir& dir) {
   return r;
 }
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool contains(const std::string& s, const std::string& part) {
+  return s.find(part) != std::string::npos;
+}
 
-/// The numeric rows of a CSV the CLI printed, after checking its header; every row must have `columns` numbers.
-std::vector<std::vector<double>> csvRows(const std::string& text, const std::string& header, std::size_t columns) {
+/// The numeric rows of a CSV the CLI printed, after checking its header; every row must have
+/// `columns` numbers.
+std::vector<std::vector<double>> csvRows(const std::string& text, const std::string& header,
+                                         std::size_t columns) {
   std::istringstream lines(text);
   std::string line;
   std::getline(lines, line);
@@ -58,11 +63,13 @@ std::vector<std::vector<double>> csvRows(const std::string& text, const std::str
 double jensenRd(double r, double sigmaA, double sigmaSp, double eta) {
   const double pi = 3.14159265358979323846;
   const double st = sigmaA + sigmaSp, alpha = sigmaSp / st, str = std::sqrt(3 * sigmaA * st);
-  const double fdr = -1.440 / (eta * eta) + 0.710 / eta + 0.668 + 0.0636 * eta, a = (1 + fdr) / (1 - fdr);
+  const double fdr = -1.440 / (eta * eta) + 0.710 / eta + 0.668 + 0.0636 * eta,
+               a = (1 + fdr) / (1 - fdr);
   const double zr = 1 / st, zv = zr * (1 + 4.0 / 3.0 * a);
   const double dr = std::sqrt(r * r + zr * zr), dv = std::sqrt(r * r + zv * zv);
   return alpha / (4 * pi) *
-         (zr * (1 + str * dr) * std::exp(-str * dr) / (dr * dr * dr) + zv * (1 + str * dv) * std::exp(-str * dv) / (dv * dv * dv));
+         (zr * (1 + str * dr) * std::exp(-str * dr) / (dr * dr * dr) +
+          zv * (1 + str * dv) * std::exp(-str * dv) / (dv * dv * dv));
 }
 }  // namespace
 
@@ -73,13 +80,17 @@ TEST_CASE("lucent profile --material skin1 --r 0,0.1,1,10 matches Jensen 2001 to
   const double sa[3] = {0.032, 0.17, 0.48}, ss[3] = {0.74, 0.88, 1.01};
   const auto rows = csvRows(r.out, "r_mm,R,G,B", 4);
   for (const auto& v : rows)
-    for (int c = 0; c < 3; ++c) CHECK(v[c + 1] == doctest::Approx(jensenRd(v[0], sa[c], ss[c], 1.3)).epsilon(1e-6));
+    for (int c = 0; c < 3; ++c)
+      CHECK(v[c + 1] == doctest::Approx(jensenRd(v[0], sa[c], ss[c], 1.3)).epsilon(1e-6));
   CHECK(rows.size() == 4);
 }
 
 TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, nothing written") {
   lucent::test::TempDir dir;
-  { std::ofstream(dir / "open.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\n"; }
+  {
+    std::ofstream(dir / "open.obj")
+        << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\n";
+  }
   const std::string out = dir / "x.exr";
   struct Case {
     std::string args, expect;
@@ -102,7 +113,8 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
       {"render --out " + out + " --light laser:1,2,3", "unknown kind 'laser'"},
       {"render --out " + out + " --light point:0,0,0", "must not be zero"},
       {"render --out " + dir / "x.tiff", "use a .exr or .png"},
-      {"render --out " + dir / "no-such-folder/x.exr" + " --width 8 --height 8 --quiet", "does not exist"},
+      {"render --out " + dir / "no-such-folder/x.exr" + " --width 8 --height 8 --quiet",
+       "does not exist"},
       {"render", "no output"},
       {"profile --r 1,-2", "must be >= 0"},
       {"profile --material skin1 --sigma-a 1,1,1 --sigma-s 1,1,1", "not both"},
@@ -133,22 +145,27 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
 
 TEST_CASE("render writes EXR, PNG and stats; compare of an image with itself reports zero error") {
   lucent::test::TempDir dir;
-  const Run r = lucentCli("render --shape sphere --size-mm 10 --width 32 --height 32 --quiet --out " + dir / "a.exr" +
-                              " --out " + dir / "a.png" + " --stats " + dir / "a.json",
-                          dir);
+  const Run r =
+      lucentCli("render --shape sphere --size-mm 10 --width 32 --height 32 --quiet --out " +
+                    dir / "a.exr" + " --out " + dir / "a.png" + " --stats " + dir / "a.json",
+                dir);
   REQUIRE(r.code == 0);
   CHECK(std::filesystem::file_size(dir / "a.exr") > 0);
   CHECK(std::filesystem::file_size(dir / "a.png") > 0);
   const std::string stats = slurp(dir / "a.json");
-  for (const char* key : {"\"wall_seconds\"", "\"peak_memory_mib\"", "\"surface_samples\"", "\"spacing_mm\"", "\"fraction\": \"0.5\""})
+  for (const char* key : {"\"wall_seconds\"", "\"peak_memory_mib\"", "\"surface_samples\"",
+                          "\"spacing_mm\"", "\"fraction\": \"0.5\""})
     CHECK(contains(stats, key));
   const Run c = lucentCli("compare --json " + dir / "a.exr " + dir / "a.exr", dir);
   REQUIRE(c.code == 0);
   CHECK(contains(c.out, "\"rmse_tonemapped\": 0"));
   CHECK(contains(c.out, "\"relative_rms\": 0"));
   // The hierarchical method on the same scene: close to the truth, and its knob is recorded.
-  const Run jb = lucentCli("render --shape sphere --size-mm 10 --width 32 --height 32 --quiet --method jensen-buhler "
-                           "--knob epsilon=0.05 --out " + dir / "jb.exr --stats " + dir / "jb.json", dir);
+  const Run jb = lucentCli(
+      "render --shape sphere --size-mm 10 --width 32 --height 32 --quiet --method jensen-buhler "
+      "--knob epsilon=0.05 --out " +
+          dir / "jb.exr --stats " + dir / "jb.json",
+      dir);
   REQUIRE(jb.code == 0);
   CHECK(contains(slurp(dir / "jb.json"), "\"epsilon\": \"0.05\""));
   const Run cj = lucentCli("compare --json " + dir / "jb.exr " + dir / "a.exr", dir);
@@ -178,9 +195,10 @@ TEST_CASE("render --method tsis|hybrid|tsm: images and per-stage timings") {
   lucent::test::TempDir dir;
   for (const std::string method : {"tsis", "hybrid", "tsm"}) {
     const std::string stats = dir / (method + ".json");
-    const Run r = lucentCli("render --shape sphere --size-mm 10 --width 24 --height 24 --quiet --method " + method +
-                                " --knob eval=vertex --out " + dir / (method + ".exr") + " --stats " + stats,
-                            dir);
+    const Run r = lucentCli(
+        "render --shape sphere --size-mm 10 --width 24 --height 24 --quiet --method " + method +
+            " --knob eval=vertex --out " + dir / (method + ".exr") + " --stats " + stats,
+        dir);
     INFO(method << ": " << r.err);
     REQUIRE(r.code == 0);
     const std::string json = slurp(stats);
@@ -192,9 +210,11 @@ TEST_CASE("render --method tsis|hybrid|tsm: images and per-stage timings") {
 
 TEST_CASE("bench sweeps knobs against a reference and writes a CSV row per setting and a chart") {
   lucent::test::TempDir dir;
-  const Run b = lucentCli("bench --shape sphere --size-mm 5 --width 24 --height 24 --quiet --sweep fraction=2,1 "
-                          "--reference-knob fraction=0.5 --csv " + dir / "b.csv" + " --plot " + dir / "b.png",
-                          dir);
+  const Run b = lucentCli(
+      "bench --shape sphere --size-mm 5 --width 24 --height 24 --quiet --sweep fraction=2,1 "
+      "--reference-knob fraction=0.5 --csv " +
+          dir / "b.csv" + " --plot " + dir / "b.png",
+      dir);
   INFO(b.err);
   REQUIRE(b.code == 0);
   const std::string csv = slurp(dir / "b.csv");
@@ -205,10 +225,14 @@ TEST_CASE("bench sweeps knobs against a reference and writes a CSV row per setti
 
 TEST_CASE("bench with a baseline sweep reports the speed-up at equal error") {
   lucent::test::TempDir dir;
-  const Run b = lucentCli("bench --shape sphere --size-mm 5 --width 24 --height 24 --quiet --method tsis --sweep samples=64,4096 "
-                          "--reference-knob fraction=0.5 --baseline-method jensen-buhler --baseline-sweep epsilon=3,1,0.3,0.1,0.03,0 "
-                          "--csv " + dir / "b.csv",
-                          dir);
+  const Run b = lucentCli(
+      "bench --shape sphere --size-mm 5 --width 24 --height 24 --quiet --method tsis --sweep "
+      "samples=64,4096 "
+      "--reference-knob fraction=0.5 --baseline-method jensen-buhler --baseline-sweep "
+      "epsilon=3,1,0.3,0.1,0.03,0 "
+      "--csv " +
+          dir / "b.csv",
+      dir);
   INFO(b.err);
   REQUIRE(b.code == 0);
   const std::string csv = slurp(dir / "b.csv");
@@ -219,7 +243,8 @@ TEST_CASE("bench with a baseline sweep reports the speed-up at equal error") {
 
 TEST_CASE("profile --method pathtrace: ring CSV with standard errors, totals beside the dipole's") {
   lucent::test::TempDir dir;
-  const Run r = lucentCli("profile --method pathtrace --material marble --rmax 5 --n 10 --photons 20000 --quiet", dir);
+  const Run r = lucentCli(
+      "profile --method pathtrace --material marble --rmax 5 --n 10 --photons 20000 --quiet", dir);
   REQUIRE(r.code == 0);
   const auto rows = csvRows(r.out, "r_mm,R,G,B,R_se,G_se,B_se", 7);
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -233,19 +258,24 @@ TEST_CASE("profile --method pathtrace: ring CSV with standard errors, totals bes
 TEST_CASE("render --method pathtrace: image, standard error, nested inclusion, clear errors") {
   lucent::test::TempDir dir;
   const std::string stats = dir / "pt.json", se = dir / "se.exr";
-  const Run r = lucentCli("render --shape sphere --size-mm 3 --width 24 --height 24 --quiet --method pathtrace --spp 8 "
-                          "--inclusion ketchup --density noise:2 --knob stderr=" + se + " --out " + dir / "pt.exr" +
-                              " --stats " + stats,
-                          dir);
+  const Run r = lucentCli(
+      "render --shape sphere --size-mm 3 --width 24 --height 24 --quiet --method pathtrace --knob "
+      "spp=8 "
+      "--inclusion ketchup --density noise:2 --knob stderr=" +
+          se + " --out " + dir / "pt.exr" + " --stats " + stats,
+      dir);
   INFO(r.err);
   REQUIRE(r.code == 0);
   const std::string json = slurp(stats);
   CHECK(contains(json, "\"spp\": \"8\""));
   CHECK(contains(json, "\"image_mean_relative_stderr\""));
   CHECK(contains(r.err, "inclusion: Ketchup sphere"));
-  CHECK(contains(r.err, "light subpaths"));  // the default lights are delta lights behind eta 1.3: the note says so
+  CHECK(contains(
+      r.err,
+      "light subpaths"));  // the default lights are delta lights behind eta 1.3: the note says so
   CHECK_FALSE(contains(r.err, "disagreed"));
-  const lucent::image::Image img = lucent::io::readExr(dir / "pt.exr"), err = lucent::io::readExr(se);
+  const lucent::image::Image img = lucent::io::readExr(dir / "pt.exr"),
+                             err = lucent::io::readExr(se);
   std::size_t covered = 0;
   for (std::size_t i = 0; i < img.pixels.size(); ++i)
     if (img.covered(i)) {
@@ -255,33 +285,38 @@ TEST_CASE("render --method pathtrace: image, standard error, nested inclusion, c
     }
   CHECK(covered > 100);
 
-  const Run bad = lucentCli("render --shape torus --quiet --method pathtrace --inclusion marble:0.9 --out " +
-                                dir / "x.exr",
-                            dir);
+  const Run bad =
+      lucentCli("render --shape torus --quiet --method pathtrace --inclusion marble:0.9 --out " +
+                    dir / "x.exr",
+                dir);
   CHECK(bad.code == 2);
   CHECK(contains(bad.err, "not inside the object"));
   CHECK_FALSE(std::filesystem::exists(dir / "x.exr"));
-  const Run badDensity = lucentCli("render --shape sphere --quiet --method pathtrace --density fog.vdb --out " + dir / "x.exr", dir);
+  const Run badDensity = lucentCli(
+      "render --shape sphere --quiet --method pathtrace --density fog.vdb --out " + dir / "x.exr",
+      dir);
   CHECK(badDensity.code == 2);
   CHECK(contains(badDensity.err, "fog.vdb"));
 }
 
 #ifdef LUCENT_HAVE_TETGEN
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
-#include <vtkXMLUnstructuredGridReader.h>
-#include <vtkFloatArray.h>
-#include <vtkImageData.h>
 #include <vtkXMLImageDataWriter.h>
+#include <vtkXMLUnstructuredGridReader.h>
 
-TEST_CASE("render --method quadgraph: image, per-level iterations, and the graph as .vtu for ParaView") {
+TEST_CASE(
+    "render --method quadgraph: image, per-level iterations, and the graph as .vtu for ParaView") {
   lucent::test::TempDir dir;
   const std::string vtu = dir / "graph.vtu", stats = dir / "qg.json";
-  const Run r = lucentCli("render --shape sphere --size-mm 10 --width 32 --height 32 --quiet --method quadgraph "
-                          "--knob levels=2 --knob solver=sor --knob vtu=" + vtu + " --out " + dir / "qg.exr" +
-                              " --stats " + stats,
-                          dir);
+  const Run r = lucentCli(
+      "render --shape sphere --size-mm 10 --width 32 --height 32 --quiet --method quadgraph "
+      "--knob levels=2 --knob solver=sor --knob vtu=" +
+          vtu + " --out " + dir / "qg.exr" + " --stats " + stats,
+      dir);
   INFO(r.err);
   REQUIRE(r.code == 0);
   const std::string json = slurp(stats);
@@ -302,14 +337,16 @@ TEST_CASE("render --method quadgraph: image, per-level iterations, and the graph
   CHECK(range[0] >= -1e-6 * range[1]);
   CHECK(range[1] > 0);
 
-  const Run bad = lucentCli("render --shape sphere --quiet --method quadgraph --knob solver=gmres --out " + dir / "x.exr", dir);
+  const Run bad = lucentCli(
+      "render --shape sphere --quiet --method quadgraph --knob solver=gmres --out " + dir / "x.exr",
+      dir);
   CHECK(bad.code == 2);
   CHECK(contains(bad.err, "knob solver must be jacobi or sor or cg"));
   CHECK_FALSE(std::filesystem::exists(dir / "x.exr"));
 }
 namespace {
-/// A 17^3 .vti whose 'density' is 1 in the lower half of x and 0.05 in the upper half (the ParaView user's
-/// segmented scan, reduced to its essence).
+/// A 17^3 .vti whose 'density' is 1 in the lower half of x and 0.05 in the upper half (the ParaView
+/// user's segmented scan, reduced to its essence).
 void writeHalfDensityVti(const std::string& path, double spacingZ) {
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(17, 17, 17);
@@ -327,14 +364,16 @@ void writeHalfDensityVti(const std::string& path, double spacingZ) {
 }
 }  // namespace
 
-TEST_CASE("render --method quadgraph --density FILE.vti: a scanned volume scales sigma node by node") {
+TEST_CASE(
+    "render --method quadgraph --density FILE.vti: a scanned volume scales sigma node by node") {
   lucent::test::TempDir dir;
   const std::string vti = dir / "scan.vti", vtu = dir / "graph.vtu";
   writeHalfDensityVti(vti, 0.5);
-  const Run r = lucentCli("render --shape sphere --size-mm 10 --width 32 --height 32 --quiet --method quadgraph "
-                          "--material skin1 --knob levels=1 --knob display=nodes --density " + vti + ":density" +
-                              " --knob vtu=" + vtu + " --out " + dir / "qg.exr",
-                          dir);
+  const Run r = lucentCli(
+      "render --shape sphere --size-mm 10 --width 32 --height 32 --quiet --method quadgraph "
+      "--material skin1 --knob levels=1 --knob display=nodes --density " +
+          vti + ":density" + " --knob vtu=" + vtu + " --out " + dir / "qg.exr",
+      dir);
   INFO(r.err);
   REQUIRE(r.code == 0);
   auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
@@ -362,14 +401,17 @@ TEST_CASE("render --method quadgraph --density FILE.vti: a scanned volume scales
   CHECK(dense > 100);
   CHECK(thin > 100);
 
-  // Bad volumes: a missing array names the ones there are; non-cubic voxels name the fix; nothing written.
-  const Run noArray = lucentCli("render --shape sphere --quiet --method quadgraph --density " + vti +
-                                    ":bone --out " + dir / "x.exr", dir);
+  // Bad volumes: a missing array names the ones there are; non-cubic voxels name the fix; nothing
+  // written.
+  const Run noArray = lucentCli("render --shape sphere --quiet --method quadgraph --density " +
+                                    vti + ":bone --out " + dir / "x.exr",
+                                dir);
   CHECK(noArray.code == 2);
   CHECK(contains(noArray.err, "no point-data array 'bone'; the file has: density"));
   writeHalfDensityVti(dir / "stretched.vti", 0.7);
   const Run stretched = lucentCli("render --shape sphere --quiet --method quadgraph --density " +
-                                      dir / "stretched.vti" + " --out " + dir / "x.exr", dir);
+                                      dir / "stretched.vti" + " --out " + dir / "x.exr",
+                                  dir);
   CHECK(stretched.code == 2);
   CHECK(contains(stretched.err, "cubic voxels"));
   CHECK_FALSE(std::filesystem::exists(dir / "x.exr"));

@@ -51,7 +51,7 @@ def close(a, b):
     return a == b or abs(a - b) <= 1e-9 * max(abs(a), abs(b))
 
 
-def check_knob_property(proxy, name, knob):
+def check_knob_property(proxy, name, knob, max_bound=None):
     prop = proxy.GetProperty(name)
     if prop is None:
         fail("no property %s for the knob %s" % (name, knob["name"]))
@@ -60,12 +60,19 @@ def check_knob_property(proxy, name, knob):
         if not close(float(prop.GetElement(0)), float(knob["default"])):
             fail("%s default %s, the registry says %s" % (name, prop.GetElement(0), knob["default"]))
         domain = prop.GetDomain("range")
-        if domain is None or not domain.GetMinimumExists(0) or not close(domain.GetMinimum(0), knob["min"]):
+        if domain is None or not domain.GetMinimumExists(0):
+            fail("%s has no range minimum" % name)
+        low = domain.GetMinimum(0)
+        if knob["min_exclusive"]:  # an inclusive domain stands just above an exclusive bound
+            if not knob["min"] < low <= knob["min"] + max(abs(knob["min"]) * 1e-12, 1e-300):
+                fail("%s: minimum %s does not stand just above the registry's exclusive %s" % (name, low, knob["min"]))
+        elif not close(low, knob["min"]):
             fail("%s: the range's minimum is not the registry's %s" % (name, knob["min"]))
-        if (knob["max"] is None) != (not domain.GetMaximumExists(0)):
-            fail("%s: the range's maximum disagrees with the registry's %s" % (name, knob["max"]))
-        if knob["max"] is not None and not close(domain.GetMaximum(0), knob["max"]):
-            fail("%s: maximum %s, the registry says %s" % (name, domain.GetMaximum(0), knob["max"]))
+        high = knob["max"] if max_bound is None else min(x for x in (knob["max"], max_bound) if x is not None)
+        if (high is None) != (not domain.GetMaximumExists(0)):
+            fail("%s: the range's maximum disagrees with the registry's %s" % (name, high))
+        if high is not None and not close(domain.GetMaximum(0), high):
+            fail("%s: maximum %s, the registry says %s" % (name, domain.GetMaximum(0), high))
     else:
         if prop.GetElement(0) != knob["default"]:
             fail("%s default '%s', the registry says '%s'" % (name, prop.GetElement(0), knob["default"]))
@@ -81,7 +88,7 @@ def check_generated_properties(path):
     registry = json.load(open(path))["techniques"]
     # The filter holds the header-only techniques (an adapter's, such as quadgraph's TetGen, is not linked).
     offered = [t for t in registry if t["capabilities"]["per_vertex"] and not t["capabilities"]["needs_camera"]
-               and not t["requires"]]
+               and not t["required_library"]]
     probe = LucentTranslucent(Input=Sphere())  # fresh: every property holds its XML default
     proxy = probe.SMProxy
     domain = proxy.GetProperty("Technique").GetDomain("list")
@@ -89,6 +96,9 @@ def check_generated_properties(path):
     if listed != [t["name"] for t in offered]:
         fail("the Technique property offers %s, the registry's per-vertex techniques are %s"
              % (listed, [t["name"] for t in offered]))
+    truth = next(t["name"] for t in registry if t["capabilities"]["ground_truth"] and not t["capabilities"]["needs_camera"])
+    if proxy.GetProperty("Technique").GetElement(0) != truth:
+        fail("the Technique property's default is not the registry's ground truth, %s" % truth)
     expected = {check_knob_property(proxy, t["vtk_name"] + k["vtk_name"], k)
                 for t in offered for k in t["knobs"] if k["kind"] != "output-file"}
     it = proxy.NewPropertyIterator()
@@ -119,9 +129,9 @@ def check_generated_properties(path):
     twins = 0
     for t in registry:
         if t["capabilities"]["gpu_twin"] == "vtkLucentPass":
-            for name in t["capabilities"]["gpu_twin_knobs"]:
-                knob = next(k for k in t["knobs"] if k["name"] == name)
-                check_knob_property(view_proxy, "Lucent" + knob["vtk_name"], knob)
+            for twin in t["capabilities"]["gpu_twin_knobs"]:
+                knob = next(k for k in t["knobs"] if k["name"] == twin["knob"])
+                check_knob_property(view_proxy, "Lucent" + knob["vtk_name"], knob, twin["max"])
                 twins += 1
     if twins == 0:
         fail("no technique names vtkLucentPass as its GPU twin")

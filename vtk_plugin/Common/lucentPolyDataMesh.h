@@ -37,7 +37,14 @@ namespace detail {
 /// Triangulated and welded polydata of one leaf.
 inline vtkSmartPointer<vtkPolyData> weldedTriangles(vtkPolyData* poly) {
   vtkNew<vtkTriangleFilter> triangulate;
-  triangulate->SetInputData(poly);
+  if (poly->GetCellGhostArray()) {  // a distributed piece's ghost cells belong to another rank
+    vtkNew<vtkPolyData> owned;
+    owned->ShallowCopy(poly);
+    owned->RemoveGhostCells();
+    triangulate->SetInputData(owned);
+  } else {
+    triangulate->SetInputData(poly);
+  }
   triangulate->PassVertsOff();
   triangulate->PassLinesOff();
   vtkNew<vtkCleanPolyData> weld;

@@ -5,6 +5,8 @@
 #include <thread>
 #include <vector>
 
+#include <vtkCommunicator.h>
+#include <vtkCompositeDataSet.h>
 #include <vtkFloatArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -29,20 +31,15 @@ vtkStandardNewMacro(vtkLucentFilter);
 namespace {
 namespace lt = lucent::technique;
 
-/// The offered techniques (those that shade vertices without a camera), in registry order.
 std::vector<const lt::Technique*> offered() {
-  std::vector<const lt::Technique*> out;
-  for (const auto& t : vtkLucentFilter::Techniques().all())
-    if (lt::shadesVertices(t)) out.push_back(&t);
-  return out;
+  return lt::vertexTechniques(vtkLucentFilter::Techniques());
 }
 
 /// (property name, qualified name) of every knob property of the offered techniques.
 std::vector<std::pair<std::string, std::string>> knobProperties() {
   std::vector<std::pair<std::string, std::string>> out;
-  for (const lt::Technique* t : offered())
-    for (const auto& k : t->knobs)
-      if (lt::isProperty(k)) out.emplace_back(lt::propertyName(*t, k), lt::qualifiedName(*t, k));
+  for (const auto& [t, k] : lt::knobProperties(vtkLucentFilter::Techniques()))
+    out.emplace_back(lt::propertyName(*t, *k), lt::qualifiedName(*t, *k));
   return out;
 }
 
@@ -81,15 +78,11 @@ vtkSmartPointer<vtkUnsignedCharArray> colourArray(const std::vector<glm::dvec3>&
 }  // namespace
 
 lt::Registry& vtkLucentFilter::Techniques() {
-  static lt::Registry registry = [] {
-    lt::Registry r;
-    lt::addCoreTechniques(r);
-    return r;
-  }();
+  static lt::Registry registry = lt::coreRegistry();
   return registry;
 }
 
-vtkLucentFilter::vtkLucentFilter() {
+vtkLucentFilter::vtkLucentFilter() : Technique(Techniques().defaultReference().name) {
   this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 vtkLucentFilter::~vtkLucentFilter() { this->SetController(nullptr); }
@@ -180,7 +173,7 @@ struct Surfaces {
   std::vector<vtkIdType> wholeIndex;  ///< for each local point, its point in `whole`
 };
 
-Surfaces surfacesOf(vtkPolyData* input, vtkMultiProcessController* controller) {
+Surfaces surfacesOf(vtkDataObject* input, vtkMultiProcessController* controller) {
   namespace va = lucent::vtkadapter;
   Surfaces s;
   const bool distributed = controller && controller->GetNumberOfProcesses() > 1;
@@ -264,11 +257,29 @@ vtkLucentFilter::Request vtkLucentFilter::CheckRequest() const {
 
 int vtkLucentFilter::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                  vtkInformationVector* outputVector) {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkDataObject* input = vtkDataObject::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   if (!input || !output) return 0;
+  // Checked before any work; across processes every rank must agree before the collective gather.
+  Request request;
+  std::string problem;
   try {
-    const Request request = this->CheckRequest();  // before any work
+    request = this->CheckRequest();
+  } catch (const std::exception& e) {
+    problem = e.what();
+  }
+  if (this->Controller && this->Controller->GetNumberOfProcesses() > 1) {
+    int ok = problem.empty() ? 1 : 0, allOk = 0;
+    this->Controller->AllReduce(&ok, &allOk, 1, vtkCommunicator::MIN_OP);
+    if (!allOk && problem.empty())
+      problem = "another rank refused the request (its error says why)";
+  }
+  if (!problem.empty()) {
+    output->Initialize();
+    vtkErrorMacro(<< problem);
+    return 0;
+  }
+  try {
     Surfaces surfaces = surfacesOf(input, this->Controller);
     if (surfaces.whole.mesh.triangles.empty())
       throw lt::RequestError(
@@ -322,6 +333,14 @@ void vtkLucentFilter::WriteArrays(vtkPolyData* output, const lt::Rendered& resul
     output->GetPointData()->AddArray(tupleArray("Radiosity", frame.radiosity));
   output->GetPointData()->AddArray(tupleArray("Radiance", frame.radiance));
   output->GetPointData()->SetScalars(colourArray(shown, this->Exposure));
+}
+
+int vtkLucentFilter::FillInputPortInformation(int port, vtkInformation* info) {
+  // A composite of surfaces is one surface, shaded in one RequestData (never block by block: under
+  // MPI the ranks would make different numbers of collective calls).
+  if (!this->Superclass::FillInputPortInformation(port, info)) return 0;
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
+  return 1;
 }
 
 void vtkLucentFilter::SetController(vtkMultiProcessController* controller) {

@@ -9,6 +9,7 @@
 /// ("TsisSamples", the mechanical CamelCase) are generated from it. Values are checked when the
 /// filter runs.
 ///
+/// Input: a surface (vtkPolyData) or a composite of surfaces, shaded as one.
 /// Output: the input triangulated and welded (lucentPolyDataMesh.h), with point arrays "Radiosity"
 /// (3 floats, irradiance units; techniques that compute B), "Radiance" (3 floats, seen head-on) and
 /// "TranslucentColor" (3 unsigned chars, Exposure * B (else the radiance) tone-mapped x / (1 + x),
@@ -62,8 +63,8 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   ///@}
 
   ///@{
-  /// The technique, by its registry name; default "reference". GetTechniqueName(i) lists those
-  /// offered.
+  /// The technique, by its registry name; default the first offered (the ground truth, reference).
+  /// GetTechniqueName(i) lists those offered.
   void SetTechnique(const char* name);
   const char* GetTechnique() const { return this->Technique.c_str(); }
   static int GetNumberOfTechniques();
@@ -117,6 +118,7 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   vtkLucentFilter();
   ~vtkLucentFilter() override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
 #ifndef __VTK_WRAP__
   struct Request;  // material, technique, knobs and light of one run
   /// Checks the material, technique, knobs and light against the technique's own description.
@@ -125,7 +127,7 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
 #endif
 
   std::string Material = "skin1";
-  std::string Technique = "reference";
+  std::string Technique;  ///< default: the registry's default reference (the ground truth)
   std::map<std::string, std::string> Knobs;  ///< qualified name -> value, as set
   double SizeMm = 0.0;
   double LightDirection[3] = {0.0, 0.0, 1.0};

@@ -1,5 +1,8 @@
 #include "vtkLucentQuadGraph.h"
 
+#include <string>
+#include <utility>
+
 #include <vtkObjectFactory.h>
 
 #include <lucent/technique/registry.hpp>
@@ -11,8 +14,10 @@ vtkStandardNewMacro(vtkLucentQuadGraph);
 
 bool vtkLucentQuadGraph::Register() {
   lucent::technique::Registry& registry = vtkLucentFilter::Techniques();
-  if (!registry.find("quadgraph")) registry.add(lucent::technique::quadgraphTechnique());
-  return registry.find("quadgraph") != nullptr;
+  lucent::technique::Technique quadgraph = lucent::technique::quadgraphTechnique();
+  const std::string name = quadgraph.name;
+  if (!registry.find(name)) registry.add(std::move(quadgraph));
+  return registry.find(name) != nullptr;
 }
 
 namespace {

@@ -104,16 +104,23 @@ void beginDrawing(vtkOpenGLState* state, vtkOpenGLFramebufferObject* fbo,
   state->vtkglScissor(0, 0, width, height);
 }
 
-/// tsis's knob as the technique declares it (the pass is its GPU twin).
-const lucent::technique::KnobSpec& tsisKnob(const std::string& name) {
+/// The pass is tsis's GPU twin: its knob as tsis declares it, with the twin's own upper bound.
+struct TwinKnob {
+  lucent::technique::KnobSpec spec;
+  double max;
+};
+TwinKnob tsisKnob(const std::string& name) {
   static const lucent::technique::Technique tsis = lucent::technique::tsisTechnique();
-  return *tsis.knob(name);
+  for (const auto& twin : tsis.capabilities.gpuTwinKnobs)
+    if (twin.knob == name) return {*tsis.knob(name), std::min(tsis.knob(name)->max, twin.max)};
+  throw std::logic_error("tsis declares no GPU twin knob " + name);
 }
-int tsisDefault(const std::string& name) { return std::stoi(tsisKnob(name).defaultValue); }
+int tsisDefault(const std::string& name) { return std::stoi(tsisKnob(name).spec.defaultValue); }
 int clampToTsis(const std::string& name, int value) {
-  const auto& k = tsisKnob(name);
-  return int(std::clamp(double(value), k.min, k.max));
+  const TwinKnob k = tsisKnob(name);
+  return int(std::clamp(double(value), k.spec.min, k.max));
 }
+
 void endDrawing(vtkOpenGLFramebufferObject* fbo) {
   fbo->UnBind();
   fbo->RestorePreviousBindingsAndBuffers();

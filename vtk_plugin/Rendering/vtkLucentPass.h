@@ -62,9 +62,9 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   ///@{
   /// The knobs this GPU twin shares with the tsis technique (`lucent techniques`: samples,
   /// atlas-resolution): N of Eq. 9-11, and the atlas's texels per side (rounded up to a power of
-  /// two for the mip pyramid). Their defaults and ranges are tsis's own
-  /// (lucent/technique/texture_space.hpp); values are clamped to the range. The light's depth map
-  /// resolution is the pass's own.
+  /// two for the mip pyramid). Their defaults and lower bounds are tsis's own, their upper bounds
+  /// those tsis declares for this twin (lucent/technique/texture_space.hpp); values are clamped to
+  /// that range. The light's depth map resolution is the pass's own.
   void SetSamples(int n);
   vtkGetMacro(Samples, int);
   void SetAtlasResolution(int texels);

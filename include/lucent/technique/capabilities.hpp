@@ -3,10 +3,19 @@
 /// @brief What a technique can do, declared with it, and what a scene and request call for: the
 /// planner reads the first, and a mismatch is reported before any work, naming the techniques that
 /// can.
+#include <limits>
 #include <string>
 #include <vector>
 
 namespace lucent::technique {
+
+/// A knob a GPU twin shares with its technique: same name, default and lower bound; `max` is the
+/// twin's own upper bound where the hardware needs a lower one (a per-pixel loop, a texture's
+/// size).
+struct TwinKnob {
+  std::string knob;
+  double max = std::numeric_limits<double>::infinity();
+};
 
 struct Capabilities {
   ///@{ Light kinds it takes.
@@ -33,10 +42,9 @@ struct Capabilities {
   bool perVertex = true;
   bool needsCamera = false;
   ///@}
-  bool groundTruth = false;  ///< a reference other techniques are measured against
-  std::string gpuTwin;       ///< the GPU implementation of the same technique, if any
-  std::vector<std::string>
-      gpuTwinKnobs;               ///< the knobs the GPU twin takes (same names, defaults, ranges)
+  bool groundTruth = false;            ///< a reference other techniques are measured against
+  std::string gpuTwin;                 ///< the GPU implementation of the same technique, if any
+  std::vector<TwinKnob> gpuTwinKnobs;  ///< the knobs the GPU twin takes (same names and defaults)
   std::string precomputeScaling;  ///< how prepare's cost grows, e.g. "O(A / spacing^2) samples"
   std::string frameScaling;       ///< how a frame's cost grows
 };

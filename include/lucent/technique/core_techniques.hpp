@@ -19,4 +19,12 @@ inline void addCoreTechniques(Registry& registry) {
   registry.add(pathtraceTechnique());
 }
 
+/// A registry holding the core techniques: what the VTK filter and the ParaView XML generator
+/// offer.
+inline Registry coreRegistry() {
+  Registry r;
+  addCoreTechniques(r);
+  return r;
+}
+
 }  // namespace lucent::technique

@@ -46,8 +46,7 @@ class DipoleSum final : public Prepared {
   DipoleSum(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats,
             Summation summation)
       : mKnobs(knobs), mSummation(std::move(summation)) {
-    const auto& m = scene.medium.material;
-    const auto dipole = optics::Dipole<double>::make(m.sigmaA, m.sigmaSPrime, m.eta);
+    const auto dipole = dipoleOf(scene.medium.material);
     const double mfp = dipole.minMeanFreePath();
     reference::SpacingChoice choice;
     if (knobs.real("spacing") > 0) {
@@ -90,10 +89,7 @@ class DipoleSum final : public Prepared {
     const auto& m = scene.medium.material;
     const auto dipole =
         optics::Dipole<T>::make(optics::Rgb<T>(m.sigmaA), optics::Rgb<T>(m.sigmaSPrime), T(m.eta));
-    scene::IrradianceSettings irr;
-    irr.eta = m.eta;
-    irr.rayEpsilon = scene.rayEpsilon();
-    irr.environmentStrata = int(mKnobs.integer("env-strata"));
+    const scene::IrradianceSettings irr = irradianceSettings(scene, mKnobs);
     const auto truth = stats.timeFrame("irradiance", [&] {
       return reference::DipoleTruth<T>(mSamples, dipole, scene.lights, *scene.caster, irr,
                                        scene.parallelFor, scene.stage("irradiance"));

@@ -3,7 +3,9 @@
 /// @brief The techniques every front end lists and runs. A technique is added once
 /// (core_techniques.hpp for the header-only ones, an adapter for those that need a heavy library);
 /// front ends never name one.
+#include <deque>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "properties.hpp"
@@ -30,7 +32,7 @@ class Registry {
           throw std::logic_error("technique '" + t.name + "': knobs " + t.knobs[i].name + " and " +
                                  t.knobs[j].name + " have the same CamelCase name");
     t.values();  // the defaults must pass their own checks
-    for (const auto& k : t.capabilities.gpuTwinKnobs)
+    for (const auto& [k, max] : t.capabilities.gpuTwinKnobs)
       if (!t.knob(k))
         throw std::logic_error("technique '" + t.name + "': its GPU twin's knob " + k +
                                " is not its knob");
@@ -43,7 +45,8 @@ class Registry {
                                    " have the same property name " + propertyName(t, k));
     mAll.push_back(std::move(t));
   }
-  const std::vector<Technique>& all() const { return mAll; }
+  /// In the order added; references stay valid as techniques are added (adapters register later).
+  const std::deque<Technique>& all() const { return mAll; }
   const Technique* find(const std::string& name) const {
     for (const auto& t : mAll)
       if (t.name == name) return &t;
@@ -84,6 +87,14 @@ class Registry {
     return out;
   }
 
+  /// The first ground-truth technique that shades any surface point without a camera: what front
+  /// ends run and measure against when none is named.
+  const Technique& defaultReference() const {
+    for (const auto& t : mAll)
+      if (t.capabilities.groundTruth && !t.capabilities.needsCamera) return t;
+    throw RequestError("no ground-truth technique is registered");
+  }
+
   /// Names of the techniques `keep` accepts, comma-separated.
   template <class Keep>
   std::string names(const Keep& keep) const {
@@ -94,7 +105,25 @@ class Registry {
   }
 
  private:
-  std::vector<Technique> mAll;
+  std::deque<Technique> mAll;
 };
+
+/// The techniques a per-vertex, camera-less front end (the VTK filter) offers, in registry order.
+inline std::vector<const Technique*> vertexTechniques(const Registry& registry) {
+  std::vector<const Technique*> out;
+  for (const auto& t : registry.all())
+    if (shadesVertices(t)) out.push_back(&t);
+  return out;
+}
+
+/// (technique, knob) of every property of the offered techniques, in order.
+inline std::vector<std::pair<const Technique*, const KnobSpec*>> knobProperties(
+    const Registry& registry) {
+  std::vector<std::pair<const Technique*, const KnobSpec*>> out;
+  for (const Technique* t : vertexTechniques(registry))
+    for (const auto& k : t->knobs)
+      if (isProperty(k)) out.emplace_back(t, &k);
+  return out;
+}
 
 }  // namespace lucent::technique

@@ -73,7 +73,7 @@ struct SceneDescription {
   /// A progress callback for one stage (empty when nobody listens).
   util::Progress stage(const std::string& name) const {
     if (!progress) return {};
-    return [this, name](double f) { progress(name, f); };
+    return [sink = progress, name](double f) { sink(name, f); };  // safe to keep beyond this scene
   }
   void checkCancelled() const {
     if (cancelRequested && cancelRequested()) throw Cancelled();

@@ -12,7 +12,9 @@
 #include <utility>
 #include <vector>
 
+#include "../optics/dipole.hpp"
 #include "../optics/fresnel.hpp"
+#include "../scene/irradiance.hpp"
 #include "capabilities.hpp"
 #include "knob.hpp"
 #include "scene.hpp"
@@ -47,11 +49,11 @@ struct Sweep {
 using KnobList = std::vector<std::pair<std::string, std::string>>;
 
 struct Technique {
-  std::string name;      ///< what --method, the registry and (CamelCase) VTK properties call it
-  std::string summary;   ///< one line
-  std::string paper;     ///< the reference and the equations implemented
-  std::string requires;  ///< the library its adapter links (empty: header-only, every front end has
-                         ///< it)
+  std::string name;     ///< what --method, the registry and (CamelCase) VTK properties call it
+  std::string summary;  ///< one line
+  std::string paper;    ///< the reference and the equations implemented
+  std::string requiredLibrary;  ///< the library its adapter links (empty: header-only, every front
+                                ///< end has it)
   std::vector<KnobSpec> knobs;
   Capabilities capabilities;
   std::vector<Sweep> defaultSweep;  ///< what `lucent bench` sweeps when no --sweep is given
@@ -67,6 +69,22 @@ struct Technique {
     return nullptr;
   }
 };
+
+namespace detail {
+/// Irradiance through the scene's material boundary, with the technique's env-strata knob.
+inline scene::IrradianceSettings irradianceSettings(const SceneDescription& scene,
+                                                    const KnobValues& knobs) {
+  scene::IrradianceSettings irr;
+  irr.eta = scene.medium.material.eta;
+  irr.rayEpsilon = scene.rayEpsilon();
+  irr.environmentStrata = int(knobs.integer("env-strata"));
+  return irr;
+}
+
+inline optics::Dipole<double> dipoleOf(const optics::Material& m) {
+  return optics::Dipole<double>::make(m.sigmaA, m.sigmaSPrime, m.eta);
+}
+}  // namespace detail
 
 /// L(x_o, w_o) = Ft(eta, w_o) B(x_o) / pi (texture-space-importance-sampling Eq. 2; Jensen et al.
 /// 2001's diffuse exitance through the boundary), with the exact dielectric Fresnel term.

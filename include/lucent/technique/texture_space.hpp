@@ -64,19 +64,6 @@ std::vector<KnobSpec> concat(Lists... lists) {
   return out;
 }
 
-inline scene::IrradianceSettings irradianceSettings(const SceneDescription& scene,
-                                                    const KnobValues& knobs) {
-  scene::IrradianceSettings irr;
-  irr.eta = scene.medium.material.eta;
-  irr.rayEpsilon = scene.rayEpsilon();
-  irr.environmentStrata = int(knobs.integer("env-strata"));
-  return irr;
-}
-
-inline optics::Dipole<double> dipoleOf(const optics::Material& m) {
-  return optics::Dipole<double>::make(m.sigmaA, m.sigmaSPrime, m.eta);
-}
-
 /// The chart atlas (prepare).
 inline atlas::TextureAtlas buildAtlas(const SceneDescription& scene, const KnobValues& knobs,
                                       Statistics& stats) {
@@ -275,7 +262,9 @@ inline Technique tsisTechnique() {
                      detail::evaluationKnobs());
   t.capabilities = detail::textureSpaceCapabilities();
   t.capabilities.gpuTwin = "vtkLucentPass";
-  t.capabilities.gpuTwinKnobs = {"samples", "atlas-resolution"};
+  // The pass sums every sample at every pixel (a GPU watchdog stops long loops), and holds the
+  // atlas and its position map as RGBA32F textures (8192^2 would be 1 GiB each).
+  t.capabilities.gpuTwinKnobs = {{"samples", 65536}, {"atlas-resolution", 4096}};
   t.defaultSweep = {{"samples", {"400", "1600", "6400"}}};
   t.prepare = [](const SceneDescription& scene, const KnobValues& knobs, Statistics& stats) {
     return std::make_unique<detail::Tsis>(scene, knobs, stats);

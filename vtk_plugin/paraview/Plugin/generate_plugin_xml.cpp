@@ -3,6 +3,7 @@
 /// derived from the technique descriptions (lucent/technique), so no name, default, range or help
 /// is written twice.
 ///   generate_plugin_xml TEMPLATE OUTPUT
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -10,6 +11,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <lucent/technique/core_techniques.hpp>
 
@@ -52,10 +54,17 @@ bool fitsInt(double v) {
          v <= double(std::numeric_limits<int>::max());
 }
 
+/// The domain's minimum: a range domain is inclusive, so an exclusive bound (c > 0) becomes the
+/// next representable value above it.
+double minimum(const lt::KnobSpec& k, bool integer) {
+  if (!k.minExclusive) return k.min;
+  return integer ? k.min + 1 : std::nextafter(k.min, std::numeric_limits<double>::infinity());
+}
+
 /// The element, command and domain of one knob's property. A filter property passes the qualified
 /// knob name first (initial_string) and shows only for its technique; a view property has a setter
 /// of its own.
-std::string property(const lt::Technique& t, const lt::KnobSpec& k, bool forFilter) {
+std::string property(const lt::Technique& t, lt::KnobSpec k, bool forFilter) {
   const std::string name = forFilter ? lt::propertyName(t, k) : "Lucent" + lt::camelCase(k.name);
   const bool integer = k.kind == lt::KnobKind::Integer && fitsInt(k.min) && fitsInt(k.max);
   const bool real = k.kind == lt::KnobKind::Real || (k.kind == lt::KnobKind::Integer && !integer);
@@ -74,7 +83,7 @@ std::string property(const lt::Technique& t, const lt::KnobSpec& k, bool forFilt
   o << "number_of_elements=\"1\" default_values=\"" << escape(k.defaultValue) << "\">\n";
   if (integer || real) {
     o << "        <" << (integer ? "IntRangeDomain" : "DoubleRangeDomain")
-      << " name=\"range\" min=\"" << number(k.min) << "\"";
+      << " name=\"range\" min=\"" << number(minimum(k, integer)) << "\"";
     if (!std::isinf(k.max)) o << " max=\"" << number(k.max) << "\"";
     o << " />\n";
   }
@@ -100,16 +109,14 @@ std::string filterProperties(const lt::Registry& registry) {
   std::ostringstream o;
   o << "      <StringVectorProperty name=\"Technique\" command=\"SetTechnique\" "
        "number_of_elements=\"1\" "
-    << "default_values=\"reference\">\n        <StringListDomain name=\"list\">\n";
-  for (const auto& t : registry.all())
-    if (lt::shadesVertices(t)) o << "          <String value=\"" << escape(t.name) << "\" />\n";
+    << "default_values=\"" << escape(registry.defaultReference().name) << "\">\n"
+    << "        <StringListDomain name=\"list\">\n";
+  for (const lt::Technique* t : lt::vertexTechniques(registry))
+    o << "          <String value=\"" << escape(t->name) << "\" />\n";
   o << "        </StringListDomain>\n        <Documentation>The technique (lucent techniques lists "
        "them with "
     << "their papers and capabilities).</Documentation>\n      </StringVectorProperty>\n";
-  for (const auto& t : registry.all())
-    if (lt::shadesVertices(t))
-      for (const auto& k : t.knobs)
-        if (lt::isProperty(k)) o << property(t, k, true);
+  for (const auto& [t, k] : lt::knobProperties(registry)) o << property(*t, *k, true);
   return o.str();
 }
 
@@ -118,7 +125,11 @@ std::string viewProperties(const lt::Registry& registry) {
   std::ostringstream o;
   for (const auto& t : registry.all())
     if (t.capabilities.gpuTwin == "vtkLucentPass")
-      for (const auto& name : t.capabilities.gpuTwinKnobs) o << property(t, *t.knob(name), false);
+      for (const auto& twin : t.capabilities.gpuTwinKnobs) {
+        lt::KnobSpec k = *t.knob(twin.knob);
+        k.max = std::min(k.max, twin.max);  // the twin's own bound
+        o << property(t, k, false);
+      }
   return o.str();
 }
 
@@ -139,8 +150,7 @@ int main(int argc, char** argv) {
   std::stringstream text;
   text << in.rdbuf();
   std::string xml = text.str();
-  lt::Registry registry;
-  lt::addCoreTechniques(registry);  // the registry vtkLucentFilter::Techniques() holds
+  const lt::Registry registry = lt::coreRegistry();  // what vtkLucentFilter::Techniques() holds
   if (!in || !replaceMarker(xml, kFilterMarker, filterProperties(registry)) ||
       !replaceMarker(xml, kViewMarker, viewProperties(registry))) {
     std::cerr << "generate_plugin_xml: " << argv[1] << " lacks " << kFilterMarker << " or "
