@@ -4,9 +4,16 @@
 #
 # Packaging trap: ParaView's CMake config needs python3-paraview, which Conflicts with python3-vtk9, which
 # libvtk9-dev depends on. This script therefore swaps python3-paraview in (libvtk9-dev leaves; the VTK 9.1
-# runtime libraries stay, so build/ keeps working); scripts/install-deps.sh swaps back when next needed.
+# runtime libraries stay, so build/ keeps working), and swaps back on the way out, failed or not: the
+# machine's packages are left as this script found them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
+restore=()
+for p in libvtk9-dev python3-vtk9; do installed "$p" && restore+=("$p"); done
+installed python3-paraview || restore+=(python3-paraview-)
+swap_back() { [ ${#restore[@]} -eq 0 ] || scripts/lib/apt-install-missing.sh "${restore[@]}"; }
+trap swap_back EXIT
 scripts/lib/apt-install-missing.sh paraview paraview-dev python3-paraview \
   qtbase5-dev libqt5svg5-dev qttools5-dev qtxmlpatterns5-dev-tools libqt5x11extras5-dev libqt5opengl5-dev \
   xvfb xauth python3-vtk9- libvtk9-dev-
