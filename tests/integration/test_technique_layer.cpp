@@ -6,19 +6,25 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
+
+#include <lucent/scene/shapes.hpp>
 
 #include "cli/commands.hpp"
 #include "io/exr_io.hpp"
+#include "raycast/embree_ray_caster.hpp"
 #include "technique/techniques.hpp"
 #include "temp_dir.hpp"
 
 namespace {
 using namespace lucent;
+namespace lt = lucent::technique;
 
 /// Radiance = `level` everywhere: what a front end shows can be checked exactly.
 technique::Technique constantTechnique() {
@@ -175,5 +181,72 @@ TEST_CASE("A capability mismatch exits 2 before any work, naming the techniques 
     CHECK(contains(r.err, c.expect));
     CHECK_FALSE(contains(r.err, c.notExpected));
     CHECK_FALSE(std::filesystem::exists(out));
+  }
+}
+
+namespace {
+/// A 10 mm sphere of `material` under `lights`, shaded at its vertices (no camera).
+struct VertexScene {
+  lt::SceneDescription scene;
+  std::unique_ptr<raycast::EmbreeRayCaster> caster;
+  VertexScene(const char* material, std::vector<scene::Light> lights) {
+    scene.mesh = scene::shapes::sphere(5.0, 3);
+    scene.vertexNormals = scene.mesh.vertexNormals();
+    scene.medium.material = *optics::findMaterial(material);
+    scene.lights = std::move(lights);
+    caster = std::make_unique<raycast::EmbreeRayCaster>(scene.mesh);
+    scene.caster = caster.get();
+    scene.makeRayCaster = [](const scene::TriangleMesh& m) {
+      return std::make_unique<raycast::EmbreeRayCaster>(m);
+    };
+  }
+};
+
+std::vector<glm::dvec3> frameOf(lt::Prepared& prepared, const VertexScene& s) {
+  lt::Statistics stats;
+  lt::FrameResult f = prepared.frame(s.scene, lt::vertexRequest(s.scene.mesh), stats);
+  lt::completeRadiance(f, lt::vertexRequest(s.scene.mesh), s.scene.medium.material.eta);
+  return f.radiance;
+}
+
+double relativeDifference(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
+  double d2 = 0, r2 = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    d2 += glm::dot(a[i] - b[i], a[i] - b[i]), r2 += glm::dot(b[i], b[i]);
+  return std::sqrt(d2 / r2);
+}
+}  // namespace
+
+TEST_CASE(
+    "Prepare once, change the light (and the material where declared dynamic): a frame equals a "
+    "fresh run") {
+  const std::vector<scene::Light> first = {
+      scene::DirectionalLight{glm::dvec3(0, 0, 1), glm::dvec3(1)}};
+  const std::vector<scene::Light> second = {
+      scene::DirectionalLight{glm::normalize(glm::dvec3(1, 0.5, 0.2)), glm::dvec3(2)}};
+  for (const auto& t : lt::appRegistry().all()) {
+    if (t.capabilities.needsCamera || t.name.rfind("test-", 0) == 0) continue;
+    INFO(t.name);
+    const lt::KnobValues knobs = t.values();
+    VertexScene built("skin1", first);
+    lt::Statistics stats;
+    const std::unique_ptr<lt::Prepared> prepared = t.prepare(built.scene, knobs, stats);
+    CHECK_FALSE(frameOf(*prepared, built).empty());
+
+    VertexScene moved("skin1", second);
+    REQUIRE(t.capabilities.dynamicLight);
+    const auto reused = frameOf(*prepared, moved);
+    const auto fresh = frameOf(*t.prepare(moved.scene, knobs, stats), moved);
+    CHECK(relativeDifference(reused, fresh) < 1e-9);
+
+    VertexScene marble("marble", second);
+    const auto reusedMaterial = frameOf(*prepared, marble);
+    const double materialDifference =
+        relativeDifference(reusedMaterial, frameOf(*t.prepare(marble.scene, knobs, stats), marble));
+    if (t.capabilities.dynamicMaterial)
+      CHECK(materialDifference < 1e-9);
+    else
+      MESSAGE(t.name << ": a material change without a new prepare differs by "
+                     << materialDifference << " (declared static)");
   }
 }

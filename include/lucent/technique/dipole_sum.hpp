@@ -35,6 +35,8 @@ inline std::vector<KnobSpec> dipoleSumKnobs() {
 inline Capabilities dipoleSumCapabilities() {
   Capabilities c;
   c.precomputeScaling = "O(surface area / spacing^2) samples";
+  c.dynamicMaterial =
+      false;  // the converged spacing follows the material's mean free path: a new prepare
   c.frameScaling = "O(points x lit samples) Rd evaluations";
   return c;
 }
