@@ -1,5 +1,6 @@
 #include "scene_setup.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -23,6 +24,38 @@ constexpr const char* kDefaultMaterial = "skin1";
 
 /// "point:X,Y,Z[:R,G,B]" (mm; R,G,B = irradiance at the object's centre), "dir:X,Y,Z[:R,G,B]"
 /// (towards the light; irradiance), "env:FILE.exr[:SCALE]" (lat-long radiance).
+/// The brightest light lucent takes: irradiance (or radiance scale) per channel; far below where
+/// sums of many lights and samples could overflow a double.
+constexpr double kMaxLightValue = 1e12;
+
+std::string shortNumber(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
+
+/// An irradiance R,G,B (or a scale) each in [0, kMaxLightValue].
+void checkLightValues(const Args& args, const std::string& text, const glm::dvec3& e) {
+  for (int c = 0; c < 3; ++c)
+    if (!(e[c] >= 0 && e[c] <= kMaxLightValue))
+      args.fail("--light " + text + ": intensities must lie in [0, 1e12], not " +
+                shortNumber(e[c]));
+}
+
+/// The environment map's first texel that is negative or not finite, named by its pixel, as an
+/// error.
+void checkEnvironment(const Args& args, const std::string& text, const image::Image& img) {
+  for (std::size_t i = 0; i < img.pixels.size(); ++i) {
+    const glm::vec4& p = img.pixels[i];
+    for (int c = 0; c < 3; ++c)
+      if (!std::isfinite(p[c]) || p[c] < 0 || p[c] > kMaxLightValue)
+        args.fail("--light " + text + ": texel (" + std::to_string(i % std::size_t(img.width)) +
+                  ", " + std::to_string(i / std::size_t(img.width)) + ") has radiance " +
+                  shortNumber(p[c]) +
+                  "; an environment map needs finite values in [0, 1e12] (fix the EXR)");
+  }
+}
+
 scene::Light parseLight(const Args& args, const std::string& text, double diag,
                         std::string& description) {
   const auto colon = text.find(':');
@@ -38,6 +71,7 @@ scene::Light parseLight(const Args& args, const std::string& text, double diag,
     const glm::dvec3 v = parseTriple(first, what);
     const glm::dvec3 e = second.empty() ? glm::dvec3(1) : parseTriple(second, what);
     if (glm::length(v) <= 0) args.fail("--light " + text + ": the vector must not be zero");
+    checkLightValues(args, text, e);
     std::ostringstream d;
     d << kind << " (" << v.x << "," << v.y << "," << v.z << ") E=(" << e.x << "," << e.y << ","
       << e.z << ")";
@@ -46,7 +80,11 @@ scene::Light parseLight(const Args& args, const std::string& text, double diag,
       if (glm::length(v) < 0.5 * diag)
         args.fail("--light " + text +
                   ": the point light is inside the object's bounding sphere; move it further out");
-      return scene::PointLight{v, e * glm::dot(v, v)};
+      const glm::dvec3 intensity = e * glm::dot(v, v);  // irradiance e at the centre, distance |v|
+      if (!std::isfinite(intensity.x + intensity.y + intensity.z))
+        args.fail("--light " + text +
+                  ": the light is too far away (its intensity overflows); bring it closer");
+      return scene::PointLight{v, intensity};
     }
     return scene::DirectionalLight{glm::normalize(v), e};
   }
@@ -59,15 +97,18 @@ scene::Light parseLight(const Args& args, const std::string& text, double diag,
       env.width = env.height = 1;
       env.radiance = {glm::vec3(1.0f)};
       env.scale = second.empty() ? 1.0 : parseNumber(second, what);
+      checkLightValues(args, text, glm::dvec3(env.scale));
       env.source = "uniform";
       description = "uniform environment";
       return env;
     }
     const image::Image img = io::readExr(first);
+    checkEnvironment(args, text, img);
     env.width = img.width;
     env.height = img.height;
     env.source = first;
     env.scale = second.empty() ? 1.0 : parseNumber(second, what);
+    checkLightValues(args, text, glm::dvec3(env.scale));
     for (const auto& p : img.pixels) env.radiance.push_back(glm::vec3(p));
     description = "environment " + first;
     return env;

@@ -2,7 +2,11 @@
 #include <cstdio>
 
 #include <vtkAlgorithm.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkNew.h>
 #include <vtkOBJReader.h>
+#include <vtkOutputWindow.h>
 #include <vtkPLYReader.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataReader.h>
@@ -16,16 +20,49 @@
 #include <fstream>
 
 #include "../util/error.hpp"
+#include "mesh_file_checks.hpp"
 #include "vtk_mesh.hpp"
 
 namespace lucent::io {
 
 namespace {
+/// VTK's readers report problems through the output window (the PLY reader a line per missing
+/// element): silenced while lucent reads, which reports the first problem itself, in one line.
+class QuietVtk {
+ public:
+  QuietVtk() : mMode(vtkOutputWindow::GetInstance()->GetDisplayMode()) {
+    vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
+  }
+  ~QuietVtk() { vtkOutputWindow::GetInstance()->SetDisplayMode(mMode); }
+  QuietVtk(const QuietVtk&) = delete;
+  QuietVtk& operator=(const QuietVtk&) = delete;
+
+ private:
+  int mMode;
+};
+
 template <class Reader>
 vtkSmartPointer<vtkPolyData> readWith(const std::string& path) {
+  const QuietVtk quiet;
   auto reader = vtkSmartPointer<Reader>::New();
+  std::string problem;
+  vtkNew<vtkCallbackCommand> onError;
+  onError->SetClientData(&problem);
+  onError->SetCallback([](vtkObject*, unsigned long, void* sink, void* message) {
+    auto& text = *static_cast<std::string*>(sink);
+    if (text.empty() && message) text = static_cast<const char*>(message);
+  });
+  reader->AddObserver(vtkCommand::ErrorEvent, onError);
   reader->SetFileName(path.c_str());
   reader->Update();
+  if (!problem.empty()) {
+    while (!problem.empty() && (problem.back() == '\n' || problem.back() == ' '))
+      problem.pop_back();
+    const auto colon = problem.rfind(": ");
+    throw InputError("cannot read mesh '" + path + "': the reader failed (" +
+                     (colon == std::string::npos ? problem : problem.substr(colon + 2)) +
+                     "); is the file complete and a valid mesh?");
+  }
   vtkSmartPointer<vtkPolyData> out = reader->GetOutput();
   return out;
 }
@@ -40,6 +77,8 @@ scene::TriangleMesh readMesh(const std::string& path) {
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
   vtkSmartPointer<vtkPolyData> pd;
+  if (ext == ".ply") checkPlyFile(path);  // VTK's OBJ and PLY readers trust the file
+  if (ext == ".obj") checkObjFile(path);
   if (ext == ".ply")
     pd = readWith<vtkPLYReader>(path);
   else if (ext == ".obj")
@@ -56,6 +95,7 @@ scene::TriangleMesh readMesh(const std::string& path) {
   if (!pd || pd->GetNumberOfPoints() == 0)
     throw InputError("cannot read mesh '" + path +
                      "': the reader found no points; is the file a valid " + ext + " mesh?");
+  checkPolyData(pd, path);
   bool flipped = false;
   scene::TriangleMesh mesh = fromPolyData(pd, &flipped);
   if (mesh.triangles.empty())

@@ -91,6 +91,22 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
     std::ofstream(dir / "open.obj")
         << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\n";
   }
+  // Files VTK's readers trust (crashes, aborts and hangs before lucent checked them: issue 21).
+  const std::string tet = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n";
+  { std::ofstream(dir / "range.obj") << tet << "f 2 3 99999\n"; }
+  { std::ofstream(dir / "zero.obj") << tet << "f 2 3 0\n"; }
+  { std::ofstream(dir / "nan.obj") << "v nan 0 0\n" << tet.substr(8) << "f 2 3 4\n"; }
+  const std::string plyHeader = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                                "property float z\nelement face ";
+  { std::ofstream(dir / "faces.ply") << plyHeader << "10000000\nproperty list uchar int vertex_indices\nend_header\n"
+                                     << "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n"; }
+  { std::ofstream(dir / "huge.ply") << "ply\nformat ascii 1.0\nelement vertex 1000000000\nproperty float x\n"
+                                    << "end_header\n0\n"; }
+  {
+    lucent::image::Image env(4, 2);
+    env.pixels[1] = glm::vec4(std::nanf(""), 0, 0, 1);
+    lucent::io::writeExr(dir / "nan-env.exr", env);
+  }
   const std::string out = dir / "x.exr";
   struct Case {
     std::string args, expect;
@@ -130,6 +146,27 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
       {"render --out " + out + " --method tsis --knob eval=face", "eval must be pixel or vertex"},
       {"render --out " + out + " --method hybrid --knob c=0", "c must be > 0"},
       {"render --out " + out + " --method tsm --knob rings=0", "rings must be an integer in"},
+      {"render --out " + out + " --mesh " + dir / "range.obj", "names vertex 99999, but 4 vertices"},
+      {"render --out " + out + " --mesh " + dir / "range.obj --skip-mesh-check", "names vertex 99999"},
+      {"render --out " + out + " --mesh " + dir / "zero.obj", "names vertex 0"},
+      {"render --out " + out + " --mesh " + dir / "nan.obj", "not a finite number ('nan')"},
+      {"render --out " + out + " --mesh " + dir / "faces.ply", "truncated or its header is wrong"},
+      {"bench --mesh " + dir / "faces.ply", "truncated or its header is wrong"},
+      {"render --out " + out + " --mesh " + dir / "huge.ply", "more than lucent reads"},
+      {"render --out " + out + " --light dir:0,1,0:1e308", "intensities must lie in [0, 1e12], not 1e+308"},
+      {"render --out " + out + " --light env:uniform:-1", "intensities must lie in [0, 1e12], not -1"},
+      {"render --out " + out + " --light point:0,100,-100:-1,-1,-1", "intensities must lie in [0, 1e12]"},
+      {"render --out " + out + " --light env:" + dir / "nan-env.exr", "texel (1, 0) has radiance nan"},
+      {"render --out " + out + " --sigma-a 1e308,0.1,0.1 --sigma-s 1,1,1", "must lie in [0, 1e6] mm^-1"},
+      {"render --out " + out + " --knob spacing=1e-9", "use a larger spacing or raise max-samples"},
+      {"render --out " + out + " --knob spacing=-1", "spacing must be in [0,"},
+      {"render --out " + out + " --knob max-samples=1e9", "max-samples must be an integer in [1, 50000000]"},
+      {"render --out " + out + " --knob fraction=nan", "must be a finite number, not 'nan'"},
+      {"render --out " + out + " --method pathtrace --knob stderr=" + dir / "se.png", "must name a .exr file"},
+      {"render --out " + out + " --method quadgraph --knob vtu=" + dir / "g.txt", "must name a .vtu file"},
+      {"render --out " + out + " --out " + dir / "no-such-folder/y.exr", "does not exist"},
+      {"render --out " + out + " --stats " + dir / "no-such-folder/s.json", "does not exist"},
+      {"bench --csv " + dir / "b.csv --plot " + dir / "no-such-folder/p.png", "does not exist"},
   };
   for (const auto& c : cases) {
     const Run r = lucentCli(c.args, dir);
@@ -139,6 +176,7 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
     CHECK(r.out.empty());
   }
   CHECK_FALSE(std::filesystem::exists(out));
+  CHECK_FALSE(std::filesystem::exists(dir / "b.csv"));  // bench checked --plot before writing its table
   for (const auto& e : std::filesystem::recursive_directory_iterator(dir.path))
     CHECK_FALSE(contains(e.path().string(), ".tmp-"));
 }

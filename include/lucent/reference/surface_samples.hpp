@@ -1,15 +1,16 @@
 #pragma once
 /// @file surface_samples.hpp
-/// @brief Dense, deterministic surface samples for the brute-force dipole integral B(xo) = int_A E Rd dA
-/// (texture-space-importance-sampling Eq. 3).
+/// @brief Dense, deterministic surface samples for the brute-force dipole integral B(xo) = int_A E
+/// Rd dA (texture-space-importance-sampling Eq. 3).
 ///
-/// Each triangle is split into n^2 congruent sub-triangles (n = ceil(longest edge / spacing)) and each
-/// sub-triangle contributes its centroid with its area: the midpoint rule, second-order accurate in the
-/// spacing wherever the integrand is smooth. Halving the spacing quarters the error, which is what the
-/// convergence study checks.
+/// Each triangle is split into n^2 congruent sub-triangles (n = ceil(longest edge / spacing)) and
+/// each sub-triangle contributes its centroid with its area: the midpoint rule, second-order
+/// accurate in the spacing wherever the integrand is smooth. Halving the spacing quarters the
+/// error, which is what the convergence study checks.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -20,25 +21,27 @@
 namespace lucent::reference {
 
 struct SurfaceSamples {
-  std::vector<glm::dvec3> position;  ///< mm
-  std::vector<glm::dvec3> normal;    ///< interpolated shading normal, unit
-  std::vector<glm::dvec3> faceNormal;///< geometric normal of the source triangle, unit
-  std::vector<double> area;          ///< mm^2
-  double spacing = 0;                ///< requested spacing (mm): no sub-triangle edge is longer
+  std::vector<glm::dvec3> position;    ///< mm
+  std::vector<glm::dvec3> normal;      ///< interpolated shading normal, unit
+  std::vector<glm::dvec3> faceNormal;  ///< geometric normal of the source triangle, unit
+  std::vector<double> area;            ///< mm^2
+  double spacing = 0;                  ///< requested spacing (mm): no sub-triangle edge is longer
 
   std::size_t size() const { return position.size(); }
 };
 
 /// Number of samples buildSurfaceSamples would produce, without building them.
+/// Saturates at the largest size_t rather than overflow (a spacing of 1e-9 mm asks for ~10^21).
 inline std::size_t countSurfaceSamples(const scene::TriangleMesh& mesh, double spacing) {
-  std::size_t total = 0;
+  double total = 0;
   for (const auto& tri : mesh.triangles) {
     const glm::dvec3 a(mesh.positions[tri.x]), b(mesh.positions[tri.y]), c(mesh.positions[tri.z]);
     const double longest = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
-    const std::size_t n = std::max<std::size_t>(1, std::size_t(std::ceil(longest / spacing)));
+    const double n = std::max(1.0, std::ceil(longest / spacing));
     total += n * n;
   }
-  return total;
+  const double most = double(std::numeric_limits<std::size_t>::max());
+  return total >= most ? std::numeric_limits<std::size_t>::max() : std::size_t(total);
 }
 
 inline SurfaceSamples buildSurfaceSamples(const scene::TriangleMesh& mesh, double spacing) {
@@ -73,8 +76,8 @@ inline SurfaceSamples buildSurfaceSamples(const scene::TriangleMesh& mesh, doubl
     const double inv3n = 1.0 / (3.0 * n);
     for (int i = 0; i < n; ++i)
       for (int j = 0; i + j < n; ++j) {
-        emit((3 * i + 1) * inv3n, (3 * j + 1) * inv3n);                     // upright sub-triangle
-        if (i + j <= n - 2) emit((3 * i + 2) * inv3n, (3 * j + 2) * inv3n); // inverted neighbour
+        emit((3 * i + 1) * inv3n, (3 * j + 1) * inv3n);                      // upright sub-triangle
+        if (i + j <= n - 2) emit((3 * i + 2) * inv3n, (3 * j + 2) * inv3n);  // inverted neighbour
       }
   }
   return s;

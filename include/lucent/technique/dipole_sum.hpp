@@ -4,7 +4,9 @@
 /// samples, texture-space-importance-sampling Eq. 2-3) and Jensen & Buhler's hierarchical
 /// approximation of the same sum. Prepare places the samples; a frame computes their irradiance and
 /// sums B at every point.
+#include <iomanip>
 #include <memory>
+#include <sstream>
 #include <string>
 
 #include "../optics/dipole.hpp"
@@ -16,6 +18,11 @@ namespace lucent::technique {
 
 namespace detail {
 
+/// Memory of one surface sample: position, normals and area (80 bytes), its lit copy for the float
+/// kernel (28 bytes).
+inline constexpr double kBytesPerSample =
+    3 * sizeof(glm::dvec3) + sizeof(double) + 7 * sizeof(float);
+
 inline std::vector<KnobSpec> dipoleSumKnobs() {
   return {
       KnobSpec::real("spacing", "0", 0, 1e9, "mm",
@@ -23,9 +30,11 @@ inline std::vector<KnobSpec> dipoleSumKnobs() {
       KnobSpec::real("fraction", "0.5", 0, kUnbounded, "",
                      "spacing as a fraction of the smallest mean free path (when spacing = 0)",
                      Phase::Prepare, true),
-      KnobSpec::integer("max-samples", 2000000, 1, 200000000,
-                        "sample budget; the spacing is coarsened (with a warning) to respect it",
-                        Phase::Prepare),
+      KnobSpec::integer(
+          "max-samples", 2000000, 1, 50000000,
+          "sample budget (about 110 bytes each); a spacing from fraction is coarsened (with a "
+          "warning) to respect it, an explicit spacing above it is refused",
+          Phase::Prepare),
       KnobSpec::integer("env-strata", 16, 1, 256,
                         "environment light: strata x strata directions per sample"),
       KnobSpec::choice("precision", {"float", "double"},
@@ -54,6 +63,18 @@ class DipoleSum final : public Prepared {
     if (knobs.real("spacing") > 0) {
       choice.spacing = knobs.real("spacing");
       choice.meanFreePath = mfp;
+      // An input-sized allocation: bounded before it is made.
+      const std::size_t count = reference::countSurfaceSamples(scene.mesh, choice.spacing);
+      const auto budget = std::size_t(knobs.integer("max-samples"));
+      if (count > budget) {
+        std::ostringstream why;
+        why << std::setprecision(3) << "technique '" << knobs.technique()
+            << "' knob spacing=" << knobs.text("spacing") << " mm gives " << double(count)
+            << " surface samples (about " << double(count) * kBytesPerSample / 1e9
+            << " GB), more than max-samples=" << knobs.text("max-samples")
+            << "; use a larger spacing or raise max-samples";
+        throw RequestError(why.str());
+      }
     } else {
       choice = reference::chooseSpacing(scene.mesh, mfp, knobs.real("fraction"),
                                         std::size_t(knobs.integer("max-samples")));
@@ -67,7 +88,7 @@ class DipoleSum final : public Prepared {
         "samples", [&] { return reference::buildSurfaceSamples(scene.mesh, choice.spacing); });
     stats.samples = double(mSamples.size());
     stats.sampleUnit = "surface samples";
-    stats.bytes = double(mSamples.size()) * (3 * sizeof(glm::dvec3) + sizeof(double));
+    stats.bytes = double(mSamples.size()) * kBytesPerSample;
     stats.figures["surface_samples"] = double(mSamples.size());
     stats.figures["spacing_mm"] = choice.spacing;
     stats.figures["mean_free_path_mm"] = mfp;
