@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# README command 2: install what is missing, build, run every test; then the ParaView plugin's build and
-# pvbatch test (a build tree of its own, against ParaView's VTK; see scripts/paraview-plugin.sh).
+# README command 2: install what is missing, build, run every test; the sanitizer and fuzzing stages; then the
+# ParaView plugin's build and pvbatch tests (a build tree of its own, against ParaView's VTK).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
 (cd build && ctest --output-on-failure -j"$(nproc)")
+scripts/sanitize.sh      # the unit and integration tests under ASan + UBSan
+scripts/fuzz.sh          # libFuzzer on the mesh, EXR, volume and argument readers, a minute each
 scripts/paraview-plugin.sh

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <vtkCellArray.h>
+#include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
@@ -21,156 +22,113 @@ namespace {
   throw InputError("cannot read mesh '" + path + "': " + problem + "; " + fix);
 }
 
-/// One OBJ face corner "i", "i/t", "i//n" or "i/t/n": the vertex index i.
-long long objVertexIndex(const std::string& corner, const std::string& path, std::size_t line) {
-  const std::string head = corner.substr(0, corner.find('/'));
+/// Counts of what an OBJ file has defined so far, by the line kind that defines it.
+struct ObjCounts {
+  long long v = 0, vt = 0, vn = 0;
+  std::uint64_t faces = 0;
+};
+
+/// A line's numbers after its keyword: `least` to 4 of them, each finite.
+std::vector<double> checkObjNumbers(std::istringstream& words, int least, const std::string& what,
+                                    const std::string& path, std::size_t line) {
+  std::vector<double> values;
+  int count = 0;
+  for (std::string w; words >> w;) {
+    char* end = nullptr;
+    const double x = std::strtod(w.c_str(), &end);
+    if (*end != '\0' || !std::isfinite(x))
+      fail(path,
+           "line " + std::to_string(line) + ": " + what + " has '" + w + "', not a finite number",
+           "fix or remove that line");
+    values.push_back(x);
+    ++count;
+  }
+  if (count < least || count > 4)
+    fail(
+        path,
+        "line " + std::to_string(line) + ": " + what + " has " + std::to_string(count) + " numbers",
+        "a vertex needs 3 (or 4), a normal 3, a texture coordinate 1 to 3");
+  return values;
+}
+
+/// One index of a face corner "i", "i/t", "i//n" or "i/t/n" (empty = not given), within the
+/// `defined` so far.
+long long checkObjIndex(const std::string& text, long long defined, const char* of,
+                        const std::string& corner, const std::string& path, std::size_t line) {
   char* end = nullptr;
-  const long long i = std::strtoll(head.c_str(), &end, 10);
-  if (head.empty() || *end != '\0')
+  const long long i = std::strtoll(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0')
     fail(path,
-         "line " + std::to_string(line) + ": face corner '" + corner + "' is not a vertex index",
-         "write faces as f i j k with vertex numbers");
-  return i;
+         "line " + std::to_string(line) + ": face corner '" + corner + "' has '" + text +
+             "', not an index",
+         "write faces as f v, f v/t, f v//n or f v/t/n with whole numbers");
+  const long long resolved = i < 0 ? defined + 1 + i : i;
+  if (i == 0 || resolved < 1 || resolved > defined)
+    fail(path,
+         "line " + std::to_string(line) + ": face corner '" + corner + "' names " + of + " " +
+             std::to_string(i) + ", but " + std::to_string(defined) + " are defined before it",
+         "numbers start at 1 (negative ones count back from the last); re-export the mesh");
+  return resolved - 1;  // 0-based
+}
+
+std::vector<vtkIdType> checkObjFace(std::istringstream& words, ObjCounts& n,
+                                    const std::string& path, std::size_t line) {
+  std::vector<vtkIdType> ids;
+  int corners = 0;
+  for (std::string corner; words >> corner; ++corners) {
+    const auto slash1 = corner.find('/');
+    ids.push_back(
+        vtkIdType(checkObjIndex(corner.substr(0, slash1), n.v, "vertex", corner, path, line)));
+    if (slash1 == std::string::npos) continue;
+    const auto slash2 = corner.find('/', slash1 + 1);
+    const std::string t = corner.substr(
+        slash1 + 1, slash2 == std::string::npos ? std::string::npos : slash2 - slash1 - 1);
+    if (!t.empty()) checkObjIndex(t, n.vt, "texture coordinate", corner, path, line);
+    if (slash2 != std::string::npos)
+      checkObjIndex(corner.substr(slash2 + 1), n.vn, "normal", corner, path, line);
+  }
+  if (corners < 3)
+    fail(path,
+         "line " + std::to_string(line) + ": a face with " + std::to_string(corners) + " corners",
+         "every face needs at least 3");
+  if (++n.faces > kMaxMeshFaces)
+    fail(path, "more than " + std::to_string(kMaxMeshFaces) + " faces", "decimate the mesh first");
+  return ids;
 }
 }  // namespace
 
-void checkObjFile(const std::string& path) {
+vtkSmartPointer<vtkPolyData> readObj(const std::string& path) {
   std::ifstream in(path);
   std::string text;
   std::size_t line = 0;
-  long long vertices = 0;
-  std::uint64_t faces = 0;
+  ObjCounts n;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> polys;
   while (std::getline(in, text)) {
     ++line;
     std::istringstream words(text);
     std::string kind;
     words >> kind;
     if (kind == "v") {
-      double c[3];
-      for (double& x : c) {
-        std::string w;
-        words >> w;
-        char* end = nullptr;
-        x = std::strtod(w.c_str(), &end);
-        if (w.empty() || *end != '\0' || !std::isfinite(x))
-          fail(path,
-               "line " + std::to_string(line) + ": vertex " + std::to_string(vertices + 1) +
-                   " has a coordinate that is not a finite number ('" + w + "')",
-               "fix or remove that vertex");
-      }
-      if (++vertices > static_cast<long long>(kMaxMeshPoints))
+      const auto xyz = checkObjNumbers(words, 3, "vertex " + std::to_string(n.v + 1), path, line);
+      if (++n.v > static_cast<long long>(kMaxMeshPoints))
         fail(path, "more than " + std::to_string(kMaxMeshPoints) + " vertices",
              "decimate the mesh first");
+      points->InsertNextPoint(xyz[0], xyz[1], xyz[2]);
+    } else if (kind == "vt") {
+      checkObjNumbers(words, 1, "texture coordinate " + std::to_string(++n.vt), path, line);
+    } else if (kind == "vn") {
+      checkObjNumbers(words, 3, "normal " + std::to_string(++n.vn), path, line);
     } else if (kind == "f") {
-      std::string corner;
-      int corners = 0;
-      while (words >> corner) {
-        const long long i = objVertexIndex(corner, path, line);
-        const long long resolved = i < 0 ? vertices + 1 + i : i;
-        if (i == 0 || resolved < 1 || resolved > vertices)
-          fail(path,
-               "line " + std::to_string(line) + ": face " + std::to_string(faces + 1) +
-                   " names vertex " + std::to_string(i) + ", but " + std::to_string(vertices) +
-                   " vertices are defined before it",
-               "vertex numbers start at 1 (negative ones count back from the last vertex); "
-               "re-export the mesh");
-        ++corners;
-      }
-      if (corners < 3)
-        fail(path,
-             "line " + std::to_string(line) + ": a face with " + std::to_string(corners) +
-                 " corners",
-             "every face needs at least 3");
-      if (++faces > kMaxMeshFaces)
-        fail(path, "more than " + std::to_string(kMaxMeshFaces) + " faces",
-             "decimate the mesh first");
+      const std::vector<vtkIdType> ids = checkObjFace(words, n, path, line);
+      polys->InsertNextCell(vtkIdType(ids.size()), ids.data());
     }
   }
-}
-
-namespace {
-struct PlyElement {
-  std::string name;
-  std::uint64_t count = 0;
-  std::uint64_t minBytes = 0;  ///< the fewest bytes one element can take in this format
-};
-
-/// Bytes of a PLY scalar type, 0 when unknown.
-int plyTypeSize(const std::string& t) {
-  if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
-  if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
-  if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32")
-    return 4;
-  if (t == "double" || t == "float64") return 8;
-  return 0;
-}
-}  // namespace
-
-void checkPlyFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string text;
-  if (!std::getline(in, text) || text.rfind("ply", 0) != 0)
-    fail(path, "it does not start with 'ply'", "is it a PLY file?");
-  bool ascii = false, ended = false;
-  std::vector<PlyElement> elements;
-  while (std::getline(in, text)) {
-    if (!text.empty() && text.back() == '\r') text.pop_back();
-    std::istringstream words(text);
-    std::string key;
-    words >> key;
-    if (key == "end_header") {
-      ended = true;
-      break;
-    }
-    if (key == "format") {
-      std::string format;
-      words >> format;
-      ascii = format == "ascii";
-    } else if (key == "element") {
-      PlyElement e;
-      std::string count;
-      words >> e.name >> count;
-      char* end = nullptr;
-      const double n = std::strtod(count.c_str(), &end);
-      if (count.empty() || *end != '\0' || !(n >= 0) || n != std::floor(n))
-        fail(path, "the header's element '" + e.name + "' has the count '" + count + "'",
-             "it must be a whole number");
-      const std::uint64_t bound = e.name == "vertex" ? kMaxMeshPoints : kMaxMeshFaces;
-      if (n > double(bound))
-        fail(path,
-             "the header declares " + count + " " + e.name + " elements, more than lucent reads (" +
-                 std::to_string(bound) + ")",
-             "decimate the mesh first");
-      e.count = std::uint64_t(n);
-      elements.push_back(e);
-    } else if (key == "property" && !elements.empty()) {
-      std::string type;
-      words >> type;
-      if (type == "list") {
-        std::string countType;
-        words >> countType;
-        elements.back().minBytes += ascii ? 2 : std::uint64_t(std::max(plyTypeSize(countType), 1));
-      } else {
-        elements.back().minBytes += ascii ? 2 : std::uint64_t(std::max(plyTypeSize(type), 1));
-      }
-    }
-  }
-  if (!ended)
-    fail(path, "the header has no end_header line", "the file is truncated or not a PLY file");
-  const auto headerBytes = std::uint64_t(in.tellg());
-  const auto fileBytes = std::uint64_t(std::filesystem::file_size(path));
-  std::uint64_t need = 0;
-  for (const auto& e : elements) need += e.count * e.minBytes;
-  if (fileBytes - headerBytes < need) {
-    std::string declared;
-    for (const auto& e : elements)
-      declared += (declared.empty() ? "" : " and ") + std::to_string(e.count) + " " + e.name;
-    fail(path,
-         "its header declares " + declared + " elements, which take at least " +
-             std::to_string(need) + " bytes, but only " + std::to_string(fileBytes - headerBytes) +
-             " follow the header",
-         "the file is truncated or its header is wrong; re-export it");
-  }
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->SetPoints(points);
+  out->SetPolys(polys);
+  return out;
 }
 
 void checkPolyData(vtkPolyData* data, const std::string& path) {

@@ -1,12 +1,13 @@
 #pragma once
 /// @file mesh_file_checks.hpp
-/// @brief What lucent checks in a mesh file before VTK's readers see it, and in what they return:
-/// VTK's OBJ and PLY readers trust the file (an out-of-range face index crashes, a PLY header that
-/// declares 10^7 faces in a tiny file aborts with a double free, one declaring 10^9 vertices prints
-/// a line per missing vertex). Each check throws InputError naming the file, the problem and the
-/// fix.
+/// @brief Mesh files VTK's readers cannot be trusted with, read and checked by lucent: VTK's OBJ
+/// reader crashes on an out-of-range face, texture or normal index and corrupts its heap on mixed
+/// corner forms (found by fuzz/fuzz_mesh.cpp); PLY is read by ply_reader.hpp. And the check of any
+/// reader's output. Each throws InputError naming the file, the problem and the fix.
 #include <cstdint>
 #include <string>
+
+#include <vtkSmartPointer.h>
 
 class vtkPolyData;
 
@@ -17,12 +18,10 @@ namespace lucent::io {
 inline constexpr std::uint64_t kMaxMeshPoints = 100'000'000;
 inline constexpr std::uint64_t kMaxMeshFaces = 200'000'000;
 
-/// OBJ: every face index names an existing vertex (1-based, or negative counting back), none is 0,
-/// and every coordinate is a finite number.
-void checkObjFile(const std::string& path);
-
-/// PLY: a well-formed header whose element counts are within bounds and fit in the file's size.
-void checkPlyFile(const std::string& path);
+/// OBJ read by lucent itself: every face, texture and normal index names one defined before it
+/// (1-based, or negative counting back; never 0), every number is finite, counts are bounded.
+/// Vertices and faces (polygons, by their vertex indices) only: lucent computes its own normals.
+vtkSmartPointer<vtkPolyData> readObj(const std::string& path);
 
 /// Any reader's output: finite coordinates, and every cell's point ids in range.
 void checkPolyData(vtkPolyData* data, const std::string& path);

@@ -5,9 +5,6 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
 #include <vtkNew.h>
-#include <vtkOBJReader.h>
-#include <vtkOutputWindow.h>
-#include <vtkPLYReader.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataReader.h>
 #include <vtkSTLReader.h>
@@ -21,26 +18,13 @@
 
 #include "../util/error.hpp"
 #include "mesh_file_checks.hpp"
+#include "ply_reader.hpp"
+#include "quiet_vtk.hpp"
 #include "vtk_mesh.hpp"
 
 namespace lucent::io {
 
 namespace {
-/// VTK's readers report problems through the output window (the PLY reader a line per missing
-/// element): silenced while lucent reads, which reports the first problem itself, in one line.
-class QuietVtk {
- public:
-  QuietVtk() : mMode(vtkOutputWindow::GetInstance()->GetDisplayMode()) {
-    vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
-  }
-  ~QuietVtk() { vtkOutputWindow::GetInstance()->SetDisplayMode(mMode); }
-  QuietVtk(const QuietVtk&) = delete;
-  QuietVtk& operator=(const QuietVtk&) = delete;
-
- private:
-  int mMode;
-};
-
 template <class Reader>
 vtkSmartPointer<vtkPolyData> readWith(const std::string& path) {
   const QuietVtk quiet;
@@ -77,12 +61,10 @@ scene::TriangleMesh readMesh(const std::string& path) {
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
   vtkSmartPointer<vtkPolyData> pd;
-  if (ext == ".ply") checkPlyFile(path);  // VTK's OBJ and PLY readers trust the file
-  if (ext == ".obj") checkObjFile(path);
   if (ext == ".ply")
-    pd = readWith<vtkPLYReader>(path);
+    pd = readPly(path);  // lucent's own: VTK's PLY reader cannot be made safe
   else if (ext == ".obj")
-    pd = readWith<vtkOBJReader>(path);
+    pd = readObj(path);  // lucent's own: VTK's OBJ reader cannot be made safe
   else if (ext == ".stl")
     pd = readWith<vtkSTLReader>(path);
   else if (ext == ".vtp")

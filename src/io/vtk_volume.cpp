@@ -1,5 +1,7 @@
 #include "vtk_volume.hpp"
 
+#include "quiet_vtk.hpp"
+
 #include <cmath>
 #include <filesystem>
 
@@ -29,52 +31,78 @@ scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arr
   vtkNew<vtkStructuredPointsReader> legacy;
   if (endsWith(path, ".vti")) {
     if (!xml->CanReadFile(path.c_str()))
-      throw InputError(path + ": not a VTK XML image-data file; save the volume from ParaView as .vti");
+      throw InputError(path +
+                       ": not a VTK XML image-data file; save the volume from ParaView as .vti");
+    const QuietVtk quiet;
     xml->SetFileName(path.c_str());
     xml->Update();
     image = xml->GetOutput();
   } else if (endsWith(path, ".vtk")) {
+    const QuietVtk quiet;
     legacy->SetFileName(path.c_str());
     legacy->Update();
     image = legacy->GetOutput();
   } else {
-    throw InputError(path + ": unknown volume extension; give a .vti (or legacy .vtk structured points) file");
+    throw InputError(
+        path + ": unknown volume extension; give a .vti (or legacy .vtk structured points) file");
   }
   int dims[3] = {0, 0, 0};
   if (image) image->GetDimensions(dims);
-  if (!image || dims[0] * std::size_t(dims[1]) * std::size_t(dims[2]) == 0)
-    throw InputError(path + ": the volume is empty or could not be read; check the file in ParaView");
+  if (!image || !(dims[0] > 0 && dims[1] > 0 && dims[2] > 0))
+    throw InputError(path +
+                     ": the volume is empty or could not be read; check the file in ParaView");
+  // An input-sized allocation: bounded (4 bytes a voxel) before it is made.
+  constexpr double kMaxVoxels = 5e8;
+  const double voxels = double(dims[0]) * double(dims[1]) * double(dims[2]);
+  if (voxels > kMaxVoxels)
+    throw InputError(path + ": " + std::to_string(dims[0]) + " x " + std::to_string(dims[1]) +
+                     " x " + std::to_string(dims[2]) +
+                     " voxels, more than lucent reads (5e8, 2 GB); resample the volume "
+                     "(vtkImageResample, or ParaView's Resample To Image)");
   vtkPointData* pd = image->GetPointData();
   vtkDataArray* array = arrayName.empty() ? pd->GetScalars() : pd->GetArray(arrayName.c_str());
   if (!array && arrayName.empty() && pd->GetNumberOfArrays() > 0) array = pd->GetArray(0);
   if (!array) {
     std::string names;
     for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
-      names += (i ? ", " : "") + std::string(pd->GetArrayName(i) ? pd->GetArrayName(i) : "(unnamed)");
+      names +=
+          (i ? ", " : "") + std::string(pd->GetArrayName(i) ? pd->GetArrayName(i) : "(unnamed)");
     throw InputError(path + ": no point-data array '" + arrayName + "'; the file has: " +
-                     (names.empty() ? "none (cell data is not read; convert with Cell Data to Point Data)" : names));
+                     (names.empty()
+                          ? "none (cell data is not read; convert with Cell Data to Point Data)"
+                          : names));
   }
   double spacing[3], origin[3];
   image->GetSpacing(spacing);
   image->GetOrigin(origin);
   const double h = spacing[0];
   if (!(h > 0) || std::abs(spacing[1] - h) > 1e-6 * h || std::abs(spacing[2] - h) > 1e-6 * h)
-    throw InputError(path + ": voxels are " + std::to_string(spacing[0]) + " x " + std::to_string(spacing[1]) + " x " +
-                     std::to_string(spacing[2]) + "; lucent needs cubic voxels (resample with vtkImageResample)");
+    throw InputError(path + ": voxels are " + std::to_string(spacing[0]) + " x " +
+                     std::to_string(spacing[1]) + " x " + std::to_string(spacing[2]) +
+                     "; lucent needs cubic voxels (resample with vtkImageResample)");
   scene::VoxelGrid grid;
   grid.dims = {dims[0], dims[1], dims[2]};
   grid.origin = {origin[0], origin[1], origin[2]};
   grid.voxelSize = h;
   const vtkIdType n = array->GetNumberOfTuples();
+  if (double(n) != voxels)
+    throw InputError(path + ": the array '" +
+                     std::string(array->GetName() ? array->GetName() : "scalars") + "' has " +
+                     std::to_string(n) + " values for " + std::to_string(dims[0]) + " x " +
+                     std::to_string(dims[1]) + " x " + std::to_string(dims[2]) +
+                     " voxels; the file's extent and data disagree (re-save it)");
   grid.values.resize(std::size_t(n));
   const int components = array->GetNumberOfComponents();
   for (vtkIdType i = 0; i < n; ++i) {
     double sum = 0;
-    for (int c = 0; c < components; ++c) sum += array->GetComponent(i, c) * array->GetComponent(i, c);
+    for (int c = 0; c < components; ++c)
+      sum += array->GetComponent(i, c) * array->GetComponent(i, c);
     const double v = components == 1 ? array->GetComponent(i, 0) : std::sqrt(sum);
     if (!std::isfinite(v))
-      throw InputError(path + ": voxel " + std::to_string(i) + " of '" + std::string(array->GetName() ? array->GetName() : "scalars") +
-                       "' is not finite; replace NaN/inf (e.g. ParaView's Calculator) before using it as a medium");
+      throw InputError(path + ": voxel " + std::to_string(i) + " of '" +
+                       std::string(array->GetName() ? array->GetName() : "scalars") +
+                       "' is not finite; replace NaN/inf (e.g. ParaView's Calculator) before using "
+                       "it as a medium");
     grid.values[std::size_t(i)] = float(v);  // VTK point ids run x fastest, as VoxelGrid's
   }
   return grid;

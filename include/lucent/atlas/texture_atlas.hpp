@@ -201,8 +201,8 @@ inline void alignChartsToPrincipalAxes(const ChartSet& charts, std::vector<glm::
 inline bool layoutCharts(const scene::TriangleMesh& mesh, const ChartSet& charts, int gutter, double texelsPerMm,
                          const std::vector<glm::dvec2>& projected, TextureAtlas& atlas) {
   const int n = charts.count();
-  std::vector<glm::dvec2> lo(std::size_t(n), glm::dvec2(std::numeric_limits<double>::infinity()));
-  std::vector<glm::dvec2> hi(std::size_t(n), glm::dvec2(-std::numeric_limits<double>::infinity()));
+  std::vector<glm::dvec2> lo(static_cast<std::size_t>(n), glm::dvec2(std::numeric_limits<double>::infinity()));
+  std::vector<glm::dvec2> hi(static_cast<std::size_t>(n), glm::dvec2(-std::numeric_limits<double>::infinity()));
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const int c = charts.chartOfTriangle[t];
     if (c < 0) continue;

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# libFuzzer (clang) on lucent's input paths: mesh files (.obj, .ply), the EXR environment reader, the .vti
+# volume reader, the CLI's arguments. Builds build-fuzz/ with ASan + UBSan, runs each target for
+# LUCENT_FUZZ_SECONDS (default 60) from the seed corpus in fuzz/corpus/, and fails on any finding
+# (the input is kept in build-fuzz/findings/: copy it into fuzz/corpus/TARGET/ as a regression input).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/lib/apt-install-missing.sh clang libclang-rt-14-dev
+[ -f build-fuzz/CMakeCache.txt ] ||
+  CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLUCENT_FUZZ=ON \
+    -DLUCENT_BUILD_TESTS=OFF >/dev/null
+targets=(fuzz_mesh_obj fuzz_mesh_ply fuzz_exr fuzz_volume fuzz_cli_args)
+cmake --build build-fuzz -j"$(nproc)" --target "${targets[@]}"
+seconds=${LUCENT_FUZZ_SECONDS:-60}
+mkdir -p build-fuzz/findings
+export ASAN_OPTIONS="detect_leaks=1"
+export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
+for t in "${targets[@]}"; do
+  seeds=fuzz/corpus/${t#fuzz_}
+  mkdir -p "build-fuzz/corpus/$t"
+  echo "lucent fuzz: $t for ${seconds} s (seeds: $seeds)"
+  rc=0
+  build-fuzz/fuzz/"$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 \
+    -artifact_prefix="build-fuzz/findings/$t-" "build-fuzz/corpus/$t" "$seeds" > "build-fuzz/$t.log" 2>&1 || rc=$?
+  grep -E "^(stat::number_of_executed_units|stat::new_units_added|==[0-9]+==ERROR|SUMMARY)" "build-fuzz/$t.log" || true
+  if [ "$rc" -ne 0 ]; then
+    tail -40 "build-fuzz/$t.log"
+    echo "lucent fuzz: $t found a problem (exit $rc); the input is in build-fuzz/findings/" >&2
+    exit 1
+  fi
+done
+echo "lucent fuzz: clean"
