@@ -1,4 +1,5 @@
 /// `lucent compare A B`: error metrics of image A against the reference B, as text or JSON.
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -18,9 +19,12 @@ int runCompare(int argc, char** argv) {
   args.parse(argc, argv, 2);
   if (args.helpRequested()) {
     std::cout << args.helpText()
-              << "\nmetrics (DESIGN.md): rmse_tonemapped = RMSE of tone-mapped values in [0,1] over all pixels, both\n"
-                 "images mapped with the reference's L_avg; relative_rms = sqrt(sum|a-b|^2/sum|b|^2) of linear\n"
-                 "radiance over covered pixels; max_abs_error = largest per-channel |a-b|. PNG inputs are display\n"
+              << "\nmetrics (DESIGN.md): rmse_tonemapped = RMSE of tone-mapped values in [0,1] "
+                 "over all pixels, both\n"
+                 "images mapped with the reference's L_avg; relative_rms = "
+                 "sqrt(sum|a-b|^2/sum|b|^2) of linear\n"
+                 "radiance over covered pixels; max_abs_error = largest per-channel |a-b|. PNG "
+                 "inputs are display\n"
                  "values already: only rmse (of those values) and max_abs_error are meaningful.\n";
     return 0;
   }
@@ -30,7 +34,29 @@ int runCompare(int argc, char** argv) {
   const image::ToneMap tone = toneMapFromArgs(args);
   const bool linear = isExr(testPath) && isExr(refPath);
   if (!linear && isExr(testPath) != isExr(refPath))
-    args.fail("compare two EXR images (linear) or two PNG images (display values), not one of each");
+    args.fail(
+        "compare two EXR images (linear) or two PNG images (display values), not one of each");
+  // An error measure against a reference that is broken or black means nothing: say so instead of
+  // 0.
+  auto requireFinite = [&](const image::Image& img, const std::string& path) {
+    for (std::size_t i = 0; i < img.pixels.size(); ++i)
+      for (int c = 0; c < 3; ++c)
+        if (!std::isfinite(img.pixels[i][c]))
+          args.fail("'" + path + "' has a non-finite value at pixel (" +
+                    std::to_string(i % std::size_t(img.width)) + ", " +
+                    std::to_string(i / std::size_t(img.width)) + "); it cannot be compared");
+  };
+  requireFinite(test, testPath);
+  requireFinite(ref, refPath);
+  auto energy = [](const image::Image& img) {
+    double sum = 0;
+    for (const auto& p : img.pixels) sum += double(p.r) + double(p.g) + double(p.b);
+    return sum;
+  };
+  if (!(energy(ref) > 0) && energy(test) > 0)
+    args.fail("the reference '" + refPath +
+              "' is black everywhere; an error relative to it is undefined "
+              "(check how it was rendered)");
   image::ImageErrors e;
   try {
     e = linear ? image::compareImages(test, ref, tone) : image::compareDisplayImages(test, ref);
@@ -44,7 +70,9 @@ int runCompare(int argc, char** argv) {
     j.add("max_abs_error", e.maxAbsError).add("covered_pixels", double(e.coveredPixels));
     if (linear) {
       j.add("coverage_mismatch", double(e.coverageMismatch));
-      j.add("mean_ratio_r", e.meanRatio[0]).add("mean_ratio_g", e.meanRatio[1]).add("mean_ratio_b", e.meanRatio[2]);
+      j.add("mean_ratio_r", e.meanRatio[0])
+          .add("mean_ratio_g", e.meanRatio[1])
+          .add("mean_ratio_b", e.meanRatio[2]);
     }
     std::printf("%s\n", j.str().c_str());
   } else {
@@ -52,9 +80,12 @@ int runCompare(int argc, char** argv) {
     if (linear) std::printf("relative_rms      %.6g\n", e.relativeRms);
     std::printf("max_abs_error     %.6g\n", e.maxAbsError);
     if (linear) {
-      std::printf("coverage_mismatch %zu of %zu covered pixels\n", e.coverageMismatch, e.coveredPixels);
-      std::printf("mean_ratio        %.4g %.4g %.4g (R G B: test / reference, summed over covered pixels)\n",
-                  e.meanRatio[0], e.meanRatio[1], e.meanRatio[2]);
+      std::printf("coverage_mismatch %zu of %zu covered pixels\n", e.coverageMismatch,
+                  e.coveredPixels);
+      std::printf(
+          "mean_ratio        %.4g %.4g %.4g (R G B: test / reference, summed over covered "
+          "pixels)\n",
+          e.meanRatio[0], e.meanRatio[1], e.meanRatio[2]);
     }
   }
   return 0;

@@ -1,6 +1,7 @@
 #include "scene_setup.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 
@@ -8,6 +9,7 @@
 #include <lucent/scene/shapes.hpp>
 #include "../io/exr_io.hpp"
 #include "../io/mesh_io.hpp"
+#include "../io/mesh_repair.hpp"
 #include "../raycast/embree_ray_caster.hpp"
 #include "../render/density_field.hpp"
 #include "../scene/builtin_shapes.hpp"
@@ -176,6 +178,9 @@ std::vector<OptionSpec> sceneOptionSpecs() {
       {"view", "X,Y,Z", "direction from the object towards the camera (default 0,0.6,1)"},
       {"width", "W", "image width in pixels (default 400)"},
       {"height", "H", "image height in pixels (default 400)"},
+      {"repair", "",
+       "weld, drop degenerate faces, close holes and orient the mesh before the check (reports "
+       "what changed)"},
       {"skip-mesh-check", "", "render even if the mesh is not closed and outward-oriented"},
       {"density", "SPEC",
        "heterogeneous medium: sigma_a and sigma_s' times a density, noise:F, FILE.vdb[:GRID] or "
@@ -199,14 +204,26 @@ Scene buildScene(const Args& args) {
     s.mesh = scene::makeBuiltinShape(s.meshName);
   }
   s.sizeMm = args.number("size-mm", kDefaultSizeMm, 1e-6, 1e9);
+  if (args.has("repair")) {
+    const io::RepairReport repaired = io::repairMesh(s.mesh);
+    const auto changes = repaired.changes();
+    std::fprintf(stderr, "lucent %s: --repair: %s\n", args.command().c_str(),
+                 changes.empty() ? "nothing to repair" : changes.front().c_str());
+    for (std::size_t i = 1; i < changes.size(); ++i)
+      std::fprintf(stderr, "lucent %s: --repair: %s\n", args.command().c_str(), changes[i].c_str());
+  }
   if (!args.has("skip-mesh-check")) {
     const scene::MeshReport report = scene::checkMesh(s.mesh);
     if (!report.ok()) {
       std::string msg = "mesh '" + s.meshName + "' does not bound a volume:";
       for (const auto& p : report.problems()) msg += "\n  - " + p;
       msg +=
-          "\n  (or pass --skip-mesh-check to render it anyway; subsurface results will not be "
-          "physical)";
+          args.has("repair")
+              ? "\n  (--repair could not fix this; repair the mesh in MeshLab or Blender, or pass "
+                "--skip-mesh-check to render it anyway; subsurface results will not be physical)"
+              : "\n  (pass --repair to weld, close holes and orient it, or --skip-mesh-check to "
+                "render "
+                "it anyway; subsurface results will not be physical)";
       throw InputError("lucent " + args.command() + ": " + msg);
     }
   }

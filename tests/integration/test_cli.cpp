@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <lucent/scene/shapes.hpp>
+
 #include "io/exr_io.hpp"
 #include "temp_dir.hpp"
 
@@ -106,6 +108,10 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
     lucent::image::Image env(4, 2);
     env.pixels[1] = glm::vec4(std::nanf(""), 0, 0, 1);
     lucent::io::writeExr(dir / "nan-env.exr", env);
+    lucent::io::writeExr(dir / "black.exr", lucent::image::Image(4, 2));
+    lucent::image::Image lit(4, 2);
+    for (auto& p : lit.pixels) p = glm::vec4(1);
+    lucent::io::writeExr(dir / "lit.exr", lit);
   }
   const std::string out = dir / "x.exr";
   struct Case {
@@ -167,6 +173,8 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
       {"render --out " + out + " --out " + dir / "no-such-folder/y.exr", "does not exist"},
       {"render --out " + out + " --stats " + dir / "no-such-folder/s.json", "does not exist"},
       {"bench --csv " + dir / "b.csv --plot " + dir / "no-such-folder/p.png", "does not exist"},
+      {"compare " + dir / "lit.exr " + dir / "black.exr", "is black everywhere"},
+      {"compare " + dir / "lit.exr " + dir / "nan-env.exr", "non-finite value at pixel (1, 0)"},
   };
   for (const auto& c : cases) {
     const Run r = lucentCli(c.args, dir);
@@ -197,6 +205,38 @@ TEST_CASE("Every fuzzing input (seeds and past findings) gives an image or a cle
       ++files;
     }
   CHECK(files >= 6);
+}
+
+TEST_CASE("--repair: an open, unwelded, partly inside-out scan renders; the report says what changed") {
+  lucent::test::TempDir dir;
+  // A laser-scan-like sphere: a triangle soup (every corner its own point, as STL stores it; the reader
+  // welds it), a cap of faces missing (a hole), one face wound the other way.
+  const lucent::scene::TriangleMesh sphere = lucent::scene::shapes::sphere(10.0, 3);
+  std::ofstream obj(dir / "scan.obj");
+  std::size_t written = 0;
+  for (std::size_t t = 0; t < sphere.triangles.size(); ++t) {
+    const auto& tri = sphere.triangles[t];
+    const glm::vec3 a = sphere.positions[tri.x], b = sphere.positions[tri.y], c = sphere.positions[tri.z];
+    if ((a.z + b.z + c.z) / 3 > 8.5) continue;  // the hole: a cap cut off
+    const bool flip = t == 7;
+    for (const glm::vec3& p : {a, flip ? c : b, flip ? b : c}) obj << "v " << p.x << " " << p.y << " " << p.z << "\n";
+    obj << "f " << 3 * written + 1 << " " << 3 * written + 2 << " " << 3 * written + 3 << "\n";
+    ++written;
+  }
+  obj.close();
+  const std::string args = "render --mesh " + dir / "scan.obj" + " --width 24 --height 24 --quiet --out " + dir / "r.exr";
+  const Run refused = lucentCli(args, dir);
+  CHECK(refused.code == 2);
+  CHECK(contains(refused.err, "pass --repair"));
+  const Run repaired = lucentCli(args + " --repair", dir);
+  INFO(repaired.err);
+  REQUIRE(repaired.code == 0);
+  CHECK(contains(repaired.err, "oriented every face outward"));
+  CHECK(contains(repaired.err, "closed holes"));
+  const lucent::image::Image img = lucent::io::readExr(dir / "r.exr");
+  std::size_t lit = 0;
+  for (std::size_t i = 0; i < img.pixels.size(); ++i) lit += img.covered(i) && img.pixels[i].r > 0;
+  CHECK(lit > 100);
 }
 
 TEST_CASE("render writes EXR, PNG and stats; compare of an image with itself reports zero error") {
