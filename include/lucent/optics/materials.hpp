@@ -39,6 +39,7 @@ struct MeasuredEntry {
 inline constexpr std::string_view kJensen2001 = "Jensen et al. 2001";
 inline constexpr std::string_view kNarasimhan2006 = "Narasimhan et al. 2006";
 
+// clang-format off: one material a line reads best
 inline constexpr std::array<MeasuredEntry, 47> kMeasuredMaterials{{
     {"Apple", {2.29, 2.39, 1.97}, {0.0030, 0.0034, 0.046}, 1.3, kJensen2001},
     {"Chicken1", {0.15, 0.21, 0.38}, {0.015, 0.077, 0.19}, 1.3, kJensen2001},
@@ -200,6 +201,7 @@ inline constexpr std::array<MeasuredEntry, 47> kMeasuredMaterials{{
      1.33,
      kNarasimhan2006},
 }};
+// clang-format on
 
 namespace detail {
 /// "Skin1", "skin1", "lowfat-milk", "Lowfat_Milk", "lowfat milk" all name the same entry.
