@@ -50,10 +50,11 @@ int runCompare(int argc, char** argv) {
   requireFinite(ref, refPath);
   auto energy = [](const image::Image& img) {
     double sum = 0;
-    for (const auto& p : img.pixels) sum += double(p.r) + double(p.g) + double(p.b);
+    for (const auto& p : img.pixels)
+      sum += double(p.r) * p.r + double(p.g) * p.g + double(p.b) * p.b;
     return sum;
   };
-  if (!(energy(ref) > 0) && energy(test) > 0)
+  if (linear && !(energy(ref) > 0) && energy(test) > 0)  // the relative error divides by it
     args.fail("the reference '" + refPath +
               "' is black everywhere; an error relative to it is undefined "
               "(check how it was rendered)");

@@ -73,6 +73,8 @@ scene::Light parseLight(const Args& args, const std::string& text, double diag,
     const glm::dvec3 v = parseTriple(first, what);
     const glm::dvec3 e = second.empty() ? glm::dvec3(1) : parseTriple(second, what);
     if (glm::length(v) <= 0) args.fail("--light " + text + ": the vector must not be zero");
+    if (!std::isfinite(glm::dot(v, v)))
+      args.fail("--light " + text + ": the vector's length must be finite; give a shorter one");
     checkLightValues(args, text, e);
     std::ostringstream d;
     d << kind << " (" << v.x << "," << v.y << "," << v.z << ") E=(" << e.x << "," << e.y << ","

@@ -28,26 +28,29 @@ struct ObjCounts {
   std::uint64_t faces = 0;
 };
 
-/// A line's numbers after its keyword: `least` to 4 of them, each finite.
-std::vector<double> checkObjNumbers(std::istringstream& words, int least, const std::string& what,
-                                    const std::string& path, std::size_t line) {
+/// A line's numbers after its keyword: `least` to `most` of them, each finite and at most
+/// kMaxCoordinate.
+std::vector<double> checkObjNumbers(std::istringstream& words, int least, int most,
+                                    const std::string& what, const std::string& path,
+                                    std::size_t line) {
   std::vector<double> values;
   int count = 0;
   for (std::string w; words >> w;) {
     char* end = nullptr;
     const double x = std::strtod(w.c_str(), &end);
-    if (*end != '\0' || !std::isfinite(x))
+    if (*end != '\0' || !(std::abs(x) <= kMaxCoordinate))
       fail(path,
-           "line " + std::to_string(line) + ": " + what + " has '" + w + "', not a finite number",
+           "line " + std::to_string(line) + ": " + what + " has '" + w +
+               "', not a finite number of at most 1e30",
            "fix or remove that line");
     values.push_back(x);
     ++count;
   }
-  if (count < least || count > 4)
+  if (count < least || count > most)
     fail(
         path,
         "line " + std::to_string(line) + ": " + what + " has " + std::to_string(count) + " numbers",
-        "a vertex needs 3 (or 4), a normal 3, a texture coordinate 1 to 3");
+        "a vertex needs 3 (4, or 6 to 7 with colour), a normal 3, a texture coordinate 1 to 3");
   return values;
 }
 
@@ -76,6 +79,11 @@ std::vector<vtkIdType> checkObjFace(std::istringstream& words, ObjCounts& n,
   std::vector<vtkIdType> ids;
   int corners = 0;
   for (std::string corner; words >> corner; ++corners) {
+    if (corners == kMaxFaceCorners)  // triangulating a polygon is quadratic in its corners
+      fail(path,
+           "line " + std::to_string(line) + ": a face with more than " +
+               std::to_string(kMaxFaceCorners) + " corners",
+           "split it into smaller faces");
     const auto slash1 = corner.find('/');
     ids.push_back(
         vtkIdType(checkObjIndex(corner.substr(0, slash1), n.v, "vertex", corner, path, line)));
@@ -111,15 +119,16 @@ vtkSmartPointer<vtkPolyData> readObj(const std::string& path) {
     std::string kind;
     words >> kind;
     if (kind == "v") {
-      const auto xyz = checkObjNumbers(words, 3, "vertex " + std::to_string(n.v + 1), path, line);
+      const auto xyz =
+          checkObjNumbers(words, 3, 7, "vertex " + std::to_string(n.v + 1), path, line);
       if (++n.v > static_cast<long long>(kMaxMeshPoints))
         fail(path, "more than " + std::to_string(kMaxMeshPoints) + " vertices",
              "decimate the mesh first");
       points->InsertNextPoint(xyz[0], xyz[1], xyz[2]);
     } else if (kind == "vt") {
-      checkObjNumbers(words, 1, "texture coordinate " + std::to_string(++n.vt), path, line);
+      checkObjNumbers(words, 1, 3, "texture coordinate " + std::to_string(++n.vt), path, line);
     } else if (kind == "vn") {
-      checkObjNumbers(words, 3, "normal " + std::to_string(++n.vn), path, line);
+      checkObjNumbers(words, 3, 3, "normal " + std::to_string(++n.vn), path, line);
     } else if (kind == "f") {
       const std::vector<vtkIdType> ids = checkObjFace(words, n, path, line);
       polys->InsertNextCell(vtkIdType(ids.size()), ids.data());
@@ -136,8 +145,11 @@ void checkPolyData(vtkPolyData* data, const std::string& path) {
   for (vtkIdType i = 0; i < points; ++i) {
     double p[3];
     data->GetPoint(i, p);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-      fail(path, "point " + std::to_string(i) + " has a coordinate that is not a finite number",
+    if (!(std::abs(p[0]) <= kMaxCoordinate && std::abs(p[1]) <= kMaxCoordinate &&
+          std::abs(p[2]) <= kMaxCoordinate))
+      fail(path,
+           "point " + std::to_string(i) +
+               " has a coordinate that is not a finite number of at most 1e30",
            "fix or remove that vertex");
   }
   for (vtkCellArray* cells :

@@ -17,6 +17,11 @@ namespace lucent::io {
 /// 40 and 60 bytes each once read, so 10^8 points and 2 x 10^8 faces take about 16 GB).
 inline constexpr std::uint64_t kMaxMeshPoints = 100'000'000;
 inline constexpr std::uint64_t kMaxMeshFaces = 200'000'000;
+/// The largest coordinate a mesh may have (the mesh is kept in float: beyond ~3e38 a value becomes
+/// inf).
+inline constexpr double kMaxCoordinate = 1e30;
+/// The most corners of one face (ear-cut triangulation is quadratic in them).
+inline constexpr int kMaxFaceCorners = 1024;
 
 /// OBJ read by lucent itself: every face, texture and normal index names one defined before it
 /// (1-based, or negative counting back; never 0), every number is finite, counts are bounded.

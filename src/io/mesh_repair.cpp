@@ -70,6 +70,7 @@ RepairReport repairMesh(scene::TriangleMesh& mesh) {
   r.trianglesAfter = mesh.triangles.size();
   r.pointsAfter = mesh.positions.size();
   r.boundaryEdgesAfter = after.boundaryEdges;
+  r.degenerateAfter = after.degenerateFaces;
   r.turnedOutward = r.turnedOutward || (before.signedVolume <= 0 && after.signedVolume > 0) ||
                     before.inconsistentEdges > 0;
   return r;

@@ -16,7 +16,7 @@ struct RepairReport {
   std::size_t trianglesBefore = 0, trianglesAfter = 0;
   std::size_t pointsBefore = 0, pointsAfter = 0;
   std::size_t boundaryEdgesBefore = 0, boundaryEdgesAfter = 0;
-  std::size_t degenerateBefore = 0;
+  std::size_t degenerateBefore = 0, degenerateAfter = 0;
   bool turnedOutward = false;
   /// One line a change, for the user.
   std::vector<std::string> changes() const;

@@ -116,6 +116,15 @@ Header readHeader(std::ifstream& in, const std::string& path) {
                  std::to_string(bound) + ")",
              "decimate the mesh first");
       e.count = std::uint64_t(n);
+      // The bound holds for the whole file, however many element lines share the name.
+      std::uint64_t total = e.count;
+      for (const auto& other : h.elements)
+        if (other.name == e.name) total += other.count;
+      if (total > bound)
+        fail(path,
+             "the header declares more than " + std::to_string(bound) + " " + e.name +
+                 " elements in all",
+             "decimate the mesh first");
       h.elements.push_back(e);
     } else if (key == "property") {
       if (h.elements.empty())
@@ -140,7 +149,14 @@ Header readHeader(std::ifstream& in, const std::string& path) {
   }
   if (!ended)
     fail(path, "the header has no end_header line", "the file is truncated or not a PLY file");
-  h.bytes = std::uint64_t(in.tellg());
+  for (const auto& e : h.elements)  // it would be read e.count times from no bytes at all
+    if (e.count > 0 && e.properties.empty())
+      fail(path,
+           "the element '" + e.name + "' has " + std::to_string(e.count) +
+               " items but no properties",
+           "the header is malformed");
+  const auto at = in.tellg();
+  h.bytes = at < 0 ? std::uint64_t(std::filesystem::file_size(path)) : std::uint64_t(at);
   return h;
 }
 
@@ -240,26 +256,28 @@ vtkSmartPointer<vtkPolyData> readPly(const std::string& path) {
         Property count = p;
         count.isFloat = false, count.isSigned = false;
         const double n = read.scalar(count, p.countSize);
-        if (!(n >= 0 && n <= 1024))
+        if (!(n >= 0 && n <= kMaxFaceCorners))
           fail(path, "a list of " + number(n) + " items", "the file is corrupt");
         std::vector<vtkIdType> ids;
+        const bool indices = isFace && (p.name == "vertex_indices" || p.name == "vertex_index");
         for (int k = 0; k < int(n); ++k) {
           const double id = read.scalar(p, p.size);
-          ids.push_back(vtkIdType(id));
-          const bool indices = isFace && (p.name == "vertex_indices" || p.name == "vertex_index");
           if (indices && !(id >= 0 && id < double(vertices) && id == std::floor(id)))
             fail(path,
                  "face " + std::to_string(i) + " names vertex " + number(id) + " of " +
                      std::to_string(vertices),
                  "vertex indices start at 0 and must name a vertex; re-export the mesh");
+          if (indices) ids.push_back(vtkIdType(id));  // validated: in range, whole
         }
         if (isFace && (p.name == "vertex_indices" || p.name == "vertex_index") && ids.size() >= 3)
           polys->InsertNextCell(vtkIdType(ids.size()), ids.data());
       }
       if (isVertex) {
-        if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2]))
+        if (!(std::abs(xyz[0]) <= kMaxCoordinate && std::abs(xyz[1]) <= kMaxCoordinate &&
+              std::abs(xyz[2]) <= kMaxCoordinate))
           fail(path,
-               "vertex " + std::to_string(i) + " has a coordinate that is not a finite number",
+               "vertex " + std::to_string(i) +
+                   " has a coordinate that is not a finite number of at most 1e30",
                "fix or remove that vertex");
         points->InsertNextPoint(xyz);
         ++vertices;

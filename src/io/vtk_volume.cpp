@@ -75,6 +75,10 @@ scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arr
   double spacing[3], origin[3];
   image->GetSpacing(spacing);
   image->GetOrigin(origin);
+  for (int k = 0; k < 3; ++k)
+    if (!std::isfinite(spacing[k]) || !std::isfinite(origin[k]))
+      throw InputError(path +
+                       ": the volume's spacing or origin is not finite; fix the file's header");
   const double h = spacing[0];
   if (!(h > 0) || std::abs(spacing[1] - h) > 1e-6 * h || std::abs(spacing[2] - h) > 1e-6 * h)
     throw InputError(path + ": voxels are " + std::to_string(spacing[0]) + " x " +

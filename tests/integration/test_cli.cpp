@@ -102,6 +102,8 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
                                 "property float z\nelement face ";
   { std::ofstream(dir / "faces.ply") << plyHeader << "10000000\nproperty list uchar int vertex_indices\nend_header\n"
                                      << "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n"; }
+  { std::ofstream(dir / "no-props.ply") << "ply\nformat ascii 1.0\nelement vertex 100000000\nend_header\n"; }
+  { std::ofstream(dir / "far.obj") << "v 1e300 0 0\n" << tet.substr(8) << "f 2 3 4\n"; }
   { std::ofstream(dir / "huge.ply") << "ply\nformat ascii 1.0\nelement vertex 1000000000\nproperty float x\n"
                                     << "end_header\n0\n"; }
   {
@@ -173,6 +175,9 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
       {"render --out " + out + " --out " + dir / "no-such-folder/y.exr", "does not exist"},
       {"render --out " + out + " --stats " + dir / "no-such-folder/s.json", "does not exist"},
       {"bench --csv " + dir / "b.csv --plot " + dir / "no-such-folder/p.png", "does not exist"},
+      {"render --out " + out + " --mesh " + dir / "no-props.ply", "has 100000000 items but no properties"},
+      {"render --out " + out + " --mesh " + dir / "far.obj", "not a finite number of at most 1e30"},
+      {"render --out " + out + " --light dir:1e200,0,0", "length must be finite"},
       {"compare " + dir / "lit.exr " + dir / "black.exr", "is black everywhere"},
       {"compare " + dir / "lit.exr " + dir / "nan-env.exr", "non-finite value at pixel (1, 0)"},
   };
@@ -237,6 +242,13 @@ TEST_CASE("--repair: an open, unwelded, partly inside-out scan renders; the repo
   std::size_t lit = 0;
   for (std::size_t i = 0; i < img.pixels.size(); ++i) lit += img.covered(i) && img.pixels[i].r > 0;
   CHECK(lit > 100);
+}
+
+TEST_CASE("A subnormal spacing fraction ends at the sample budget, with the warning (it used to spin forever)") {
+  lucent::test::TempDir dir;
+  const Run r = lucentCli("render --knob fraction=5e-324 --width 8 --height 8 --quiet --out " + dir / "f.exr", dir);
+  CHECK(r.code == 0);
+  CHECK(contains(r.err, "sample budget reached"));
 }
 
 TEST_CASE("render writes EXR, PNG and stats; compare of an image with itself reports zero error") {

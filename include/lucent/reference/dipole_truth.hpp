@@ -41,6 +41,9 @@ inline SpacingChoice chooseSpacing(const scene::TriangleMesh& mesh, double minMe
   c.meanFreePath = minMeanFreePath;
   const double diag = mesh.bounds().diagonal();
   c.spacing = std::min(fractionOfMeanFreePath * minMeanFreePath, diag / minSamplesPerDiagonal);
+  // Below 1e-9 of the diagonal every count saturates; the floor also keeps the coarsening below moving
+  // (1.25 times a subnormal spacing rounds back to itself).
+  c.spacing = std::max(c.spacing, 1e-9 * diag);
   // Each triangle gets at least one sample, so coarsening stops once every triangle has one (the spacing
   // then exceeds the longest edge): a budget below the triangle count cannot be met by spacing alone.
   std::size_t count = countSurfaceSamples(mesh, c.spacing);

@@ -4,6 +4,7 @@
 /// samples, texture-space-importance-sampling Eq. 2-3) and Jensen & Buhler's hierarchical
 /// approximation of the same sum. Prepare places the samples; a frame computes their irradiance and
 /// sums B at every point.
+#include <cmath>
 #include <iomanip>
 #include <memory>
 #include <sstream>
@@ -76,6 +77,11 @@ class DipoleSum final : public Prepared {
         throw RequestError(why.str());
       }
     } else {
+      const double asked = knobs.real("fraction") * mfp;
+      if (!(asked > 0) || !std::isfinite(asked))
+        throw RequestError("technique '" + knobs.technique() +
+                           "' knob fraction=" + knobs.text("fraction") + " gives a spacing of " +
+                           std::to_string(asked) + " mm; use a fraction near 0.5");
       choice = reference::chooseSpacing(scene.mesh, mfp, knobs.real("fraction"),
                                         std::size_t(knobs.integer("max-samples")));
     }

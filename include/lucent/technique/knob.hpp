@@ -3,8 +3,10 @@
 /// @brief A technique's knobs, typed: kind, default, range or choices, unit, help, and the phase a
 /// change invalidates. The one place a knob's name, default and range are written; every front end
 /// (CLI, bench, VTK filter, generated ParaView XML, GPU pass) reads them from here.
+#include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -139,14 +141,10 @@ inline std::string camelCase(const std::string& name) {
 
 namespace detail {
 inline bool parseReal(const std::string& text, double& value) {
-  if (text.empty()) return false;
-  std::size_t used = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    return false;
-  }
-  return used == text.size() && std::isfinite(value);
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text.front()))) return false;
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);  // subnormal values parse too (std::stod would throw)
+  return *end == '\0' && std::isfinite(value);
 }
 }  // namespace detail
 
