@@ -1,4 +1,5 @@
-// libFuzzer target: a VTK image-data volume (.vti) as the scene's --density reads it.
+// libFuzzer target: a volume (.vti or .vdb, by LUCENT_FUZZ_EXTENSION) as the scene's --density
+// reads it.
 #include <cstddef>
 #include <cstdint>
 
@@ -7,7 +8,7 @@
 #include "util/error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::string path = lucent::fuzz::writeInput(data, size, ".vti");
+  const std::string path = lucent::fuzz::writeInput(data, size, LUCENT_FUZZ_EXTENSION);
   lucent::scene::Bounds box;
   box.lo = glm::dvec3(-1), box.hi = glm::dvec3(1);
   try {

@@ -5,10 +5,13 @@
 #include <cmath>
 #include <filesystem>
 
+#include <vtkAlgorithm.h>
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
+#include <vtkInformation.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkStructuredPoints.h>
 #include <vtkStructuredPointsReader.h>
 #include <vtkXMLImageDataReader.h>
@@ -20,6 +23,26 @@ namespace lucent::io {
 namespace {
 bool endsWith(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+/// Voxels named by a reader's header, before the data is read: an input-sized allocation is bounded
+/// (scene::kMaxVoxels) from the extent the file declares, not from what VTK has already allocated.
+void checkDeclaredExtent(vtkAlgorithm& reader, const std::string& path) {
+  reader.UpdateInformation();
+  int extent[6] = {0, -1, 0, -1, 0, -1};
+  vtkInformation* info = reader.GetOutputInformation(0);
+  if (!info || !info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+    throw InputError(path + ": the header declares no extent; check the file in ParaView");
+  info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent);
+  double dims[3];
+  for (int a = 0; a < 3; ++a) dims[a] = double(extent[2 * a + 1]) - double(extent[2 * a]) + 1;
+  if (!(dims[0] > 0 && dims[1] > 0 && dims[2] > 0))
+    throw InputError(path + ": the header's extent is empty; check the file in ParaView");
+  if (dims[0] * dims[1] * dims[2] > scene::kMaxVoxels)
+    throw InputError(path + ": the header declares " + std::to_string(long(dims[0])) + " x " +
+                     std::to_string(long(dims[1])) + " x " + std::to_string(long(dims[2])) +
+                     " voxels, more than lucent reads (5e8, 2 GB); resample the volume "
+                     "(vtkImageResample, or ParaView's Resample To Image)");
 }
 }  // namespace
 
@@ -35,11 +58,13 @@ scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arr
                        ": not a VTK XML image-data file; save the volume from ParaView as .vti");
     const QuietVtk quiet;
     xml->SetFileName(path.c_str());
+    checkDeclaredExtent(*xml, path);
     xml->Update();
     image = xml->GetOutput();
   } else if (endsWith(path, ".vtk")) {
     const QuietVtk quiet;
     legacy->SetFileName(path.c_str());
+    checkDeclaredExtent(*legacy, path);
     legacy->Update();
     image = legacy->GetOutput();
   } else {
@@ -51,10 +76,8 @@ scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arr
   if (!image || !(dims[0] > 0 && dims[1] > 0 && dims[2] > 0))
     throw InputError(path +
                      ": the volume is empty or could not be read; check the file in ParaView");
-  // An input-sized allocation: bounded (4 bytes a voxel) before it is made.
-  constexpr double kMaxVoxels = 5e8;
   const double voxels = double(dims[0]) * double(dims[1]) * double(dims[2]);
-  if (voxels > kMaxVoxels)
+  if (voxels > scene::kMaxVoxels)  // the data may still disagree with the header
     throw InputError(path + ": " + std::to_string(dims[0]) + " x " + std::to_string(dims[1]) +
                      " x " + std::to_string(dims[2]) +
                      " voxels, more than lucent reads (5e8, 2 GB); resample the volume "

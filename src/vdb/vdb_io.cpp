@@ -19,7 +19,8 @@ void initialize() {
 }
 
 openvdb::io::File openFile(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw InputError("cannot read '" + path + "': no such file; check the path");
+  if (!std::filesystem::exists(path))
+    throw InputError("cannot read '" + path + "': no such file; check the path");
   initialize();
   openvdb::io::File file(path);
   try {
@@ -28,6 +29,23 @@ openvdb::io::File openFile(const std::string& path) {
     throw InputError("cannot read '" + path + "' as OpenVDB: " + e.what() + "; is it a .vdb file?");
   }
   return file;
+}
+
+openvdb::GridBase::Ptr readGrid(openvdb::io::File& file, const std::string& name,
+                                const std::string& path) {
+  try {
+    return file.readGrid(name);
+  } catch (const std::exception& e) {
+    throw InputError("cannot read grid '" + name + "' of '" + path + "': " + e.what() +
+                     "; is the file complete?");
+  }
+}
+
+/// The active box's voxel count, in doubles (a hostile box can span the whole int range).
+double voxelCount(const openvdb::CoordBBox& box) {
+  double n = 1;
+  for (int a = 0; a < 3; ++a) n *= double(box.max()[a]) - double(box.min()[a]) + 1;
+  return n;
 }
 }  // namespace
 
@@ -47,23 +65,38 @@ scene::VoxelGrid readFloatGrid(const std::string& path, const std::string& gridN
     available += (available.empty() ? "" : ", ") + it.gridName();
     if (base) continue;
     if (!gridName.empty() && it.gridName() != gridName) continue;
-    openvdb::GridBase::Ptr g = file.readGrid(it.gridName());
+    openvdb::GridBase::Ptr g = readGrid(file, it.gridName(), path);
     if (gridName.empty() && !g->isType<openvdb::FloatGrid>()) continue;
     base = g;
   }
   file.close();
   if (!base)
-    throw InputError("'" + path + "' has no " + (gridName.empty() ? "float grid" : "grid named '" + gridName + "'") +
+    throw InputError("'" + path + "' has no " +
+                     (gridName.empty() ? "float grid" : "grid named '" + gridName + "'") +
                      "; it holds: " + (available.empty() ? "nothing" : available));
   const auto grid = openvdb::gridPtrCast<openvdb::FloatGrid>(base);
-  if (!grid) throw InputError("grid '" + gridName + "' in '" + path + "' is not a float grid; lucent reads scalar densities");
+  if (!grid)
+    throw InputError("grid '" + gridName + "' in '" + path +
+                     "' is not a float grid; lucent reads scalar densities");
   const openvdb::Vec3d vs = grid->voxelSize();
-  if (!grid->transform().isLinear() || std::abs(vs.x() - vs.y()) > 1e-9 * vs.x() || std::abs(vs.x() - vs.z()) > 1e-9 * vs.x())
-    throw InputError("grid in '" + path + "' has non-uniform voxels; resample it to cubic voxels first");
+  if (!(vs.x() > 0) || !std::isfinite(vs.x()))
+    throw InputError("grid in '" + path + "' has a voxel size that is not a positive number");
+  if (!grid->transform().isLinear() || std::abs(vs.x() - vs.y()) > 1e-9 * vs.x() ||
+      std::abs(vs.x() - vs.z()) > 1e-9 * vs.x())
+    throw InputError("grid in '" + path +
+                     "' has non-uniform voxels; resample it to cubic voxels first");
 
   scene::VoxelGrid out;
   const openvdb::CoordBBox box = grid->evalActiveVoxelBoundingBox();
   if (box.empty()) return out;
+  // Densifying is an input-sized allocation: bounded before it is made (two far-apart active voxels
+  // make a huge box from a tiny file).
+  if (voxelCount(box) > scene::kMaxVoxels)
+    throw InputError("grid in '" + path + "': its active voxels span " +
+                     std::to_string(long(double(box.max().x()) - box.min().x() + 1)) + " x " +
+                     std::to_string(long(double(box.max().y()) - box.min().y() + 1)) + " x " +
+                     std::to_string(long(double(box.max().z()) - box.min().z() + 1)) +
+                     " voxels, more than lucent densifies (5e8, 2 GB); resample or crop the grid");
   const openvdb::Coord lo = box.min(), dim = box.dim();
   out.dims = {dim.x(), dim.y(), dim.z()};
   out.voxelSize = vs.x();
@@ -73,12 +106,19 @@ scene::VoxelGrid readFloatGrid(const std::string& path, const std::string& gridN
   const auto accessor = grid->getConstAccessor();
   for (int k = 0; k < dim.z(); ++k)
     for (int j = 0; j < dim.y(); ++j)
-      for (int i = 0; i < dim.x(); ++i)
-        out.values[out.index(i, j, k)] = accessor.getValue(lo.offsetBy(i, j, k));
+      for (int i = 0; i < dim.x(); ++i) {
+        const float v = accessor.getValue(lo.offsetBy(i, j, k));
+        if (!std::isfinite(v))
+          throw InputError("grid in '" + path + "' has a non-finite value at voxel (" +
+                           std::to_string(i) + ", " + std::to_string(j) + ", " + std::to_string(k) +
+                           "); replace NaN/inf before using it as a medium");
+        out.values[out.index(i, j, k)] = v;
+      }
   return out;
 }
 
-void writeFloatGrid(const std::string& path, const scene::VoxelGrid& grid, const std::string& gridName, float background) {
+void writeFloatGrid(const std::string& path, const scene::VoxelGrid& grid,
+                    const std::string& gridName, float background) {
   initialize();
   auto vdbGrid = openvdb::FloatGrid::create(background);
   vdbGrid->setName(gridName);
@@ -89,7 +129,8 @@ void writeFloatGrid(const std::string& path, const scene::VoxelGrid& grid, const
   for (int k = 0; k < grid.dims.z; ++k)
     for (int j = 0; j < grid.dims.y; ++j)
       for (int i = 0; i < grid.dims.x; ++i)
-        if (const float v = grid.at(i, j, k); v != background) accessor.setValue(openvdb::Coord(i, j, k), v);
+        if (const float v = grid.at(i, j, k); v != background)
+          accessor.setValue(openvdb::Coord(i, j, k), v);
   io::AtomicFile out(path);
   try {
     openvdb::io::File file(out.tempPath());

@@ -522,6 +522,19 @@ TEST_CASE(
                                   dir);
   CHECK(stretched.code == 2);
   CHECK(contains(stretched.err, "cubic voxels"));
+  // A header declaring 10^15 voxels over three numbers of data: refused from the header, before VTK
+  // allocates for it.
+  std::ofstream(dir / "huge.vti")
+      << "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"0.1\">\n"
+         "<ImageData WholeExtent=\"0 99999 0 99999 0 99999\" Origin=\"0 0 0\" Spacing=\"1 1 1\">\n"
+         "<Piece Extent=\"0 99999 0 99999 0 99999\"><PointData Scalars=\"d\">"
+         "<DataArray type=\"Float32\" Name=\"d\" format=\"ascii\">1 2 3</DataArray>"
+         "</PointData></Piece></ImageData></VTKFile>\n";
+  const Run huge = lucentCli("render --shape sphere --quiet --method quadgraph --density " +
+                                 dir / "huge.vti" + " --out " + dir / "x.exr",
+                             dir);
+  CHECK(huge.code == 2);
+  CHECK(contains(huge.err, "the header declares 100000 x 100000 x 100000 voxels"));
   CHECK_FALSE(std::filesystem::exists(dir / "x.exr"));
 }
 #endif

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <fstream>
 
+#include <openvdb/io/File.h>
+#include <openvdb/openvdb.h>
 #include <glm/geometric.hpp>
 
 #include "temp_dir.hpp"
@@ -39,7 +41,8 @@ TEST_CASE("A density written to OpenVDB reads back voxel for voxel, in millimetr
   CHECK(glm::length(back.origin - g.origin) < 1e-9);
   for (std::size_t i = 0; i < g.values.size(); ++i) CHECK(back.values[i] == g.values[i]);
   // Trilinear sampling reproduces voxel values at centres and interpolates between them.
-  CHECK(back.sample(g.origin + glm::dvec3(0.25 * 3, 0.25 * 4, 0.25 * 2)) == doctest::Approx(g.at(3, 4, 2)));
+  CHECK(back.sample(g.origin + glm::dvec3(0.25 * 3, 0.25 * 4, 0.25 * 2)) ==
+        doctest::Approx(g.at(3, 4, 2)));
   const double mid = back.sample(g.origin + glm::dvec3(0.25 * 3.5, 0.25 * 4, 0.25 * 2));
   CHECK(mid == doctest::Approx(0.5 * (g.at(3, 4, 2) + g.at(4, 4, 2))));
 }
@@ -55,8 +58,46 @@ TEST_CASE("OpenVDB input errors name the file, the problem and what is there") {
     }
     return std::string("no error");
   };
-  CHECK(message([&] { vdb::readFloatGrid(dir / "missing.vdb"); }).find("no such file") != std::string::npos);
-  CHECK(message([&] { vdb::readFloatGrid(dir / "ball.vdb", "temperature"); }).find("it holds: density") != std::string::npos);
+  CHECK(message([&] { vdb::readFloatGrid(dir / "missing.vdb"); }).find("no such file") !=
+        std::string::npos);
+  CHECK(message([&] {
+          vdb::readFloatGrid(dir / "ball.vdb", "temperature");
+        }).find("it holds: density") != std::string::npos);
   { std::ofstream(dir / "text.vdb") << "not a vdb"; }
-  CHECK(message([&] { vdb::readFloatGrid(dir / "text.vdb"); }).find("as OpenVDB") != std::string::npos);
+  CHECK(message([&] { vdb::readFloatGrid(dir / "text.vdb"); }).find("as OpenVDB") !=
+        std::string::npos);
+}
+
+namespace {
+/// A sparse float grid written with OpenVDB itself, voxel by voxel (lucent's writer is dense).
+void writeSparse(const std::string& path,
+                 const std::vector<std::pair<openvdb::Coord, float>>& voxels) {
+  openvdb::initialize();
+  auto grid = openvdb::FloatGrid::create(0.0f);
+  grid->setName("density");
+  auto accessor = grid->getAccessor();
+  for (const auto& [at, value] : voxels) accessor.setValue(at, value);
+  openvdb::io::File(path).write({grid});
+}
+}  // namespace
+
+TEST_CASE("A sparse OpenVDB grid is not densified past the voxel bound, nor read with NaN") {
+  test::TempDir dir;
+  auto message = [](auto&& f) {
+    try {
+      f();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  // Two active voxels 3000 apart: a 2.7e10-voxel box from a file of a few kB.
+  writeSparse(dir / "far.vdb", {{openvdb::Coord(0, 0, 0), 1.0f}, {openvdb::Coord(2999), 1.0f}});
+  const std::string far = message([&] { vdb::readFloatGrid(dir / "far.vdb"); });
+  CHECK(far.find("3000 x 3000 x 3000 voxels, more than lucent densifies") != std::string::npos);
+  writeSparse(dir / "nan.vdb",
+              {{openvdb::Coord(0, 0, 0), 1.0f}, {openvdb::Coord(1, 0, 0), std::nanf("")}});
+  CHECK(message([&] {
+          vdb::readFloatGrid(dir / "nan.vdb");
+        }).find("non-finite value at voxel (1, 0, 0)") != std::string::npos);
 }

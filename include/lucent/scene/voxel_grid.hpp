@@ -12,18 +12,24 @@
 
 namespace lucent::scene {
 
+/// The most voxels a reader densifies (4 bytes each: 2 GB); readers check it from the file's
+/// header, before allocating.
+inline constexpr double kMaxVoxels = 5e8;
+
 struct VoxelGrid {
   glm::ivec3 dims{0};
-  glm::dvec3 origin{0};  ///< centre of voxel (0,0,0), mm
-  double voxelSize = 1;  ///< mm
+  glm::dvec3 origin{0};       ///< centre of voxel (0,0,0), mm
+  double voxelSize = 1;       ///< mm
   std::vector<float> values;  ///< x fastest, then y, then z
 
   std::size_t index(int i, int j, int k) const {
-    return (std::size_t(k) * std::size_t(dims.y) + std::size_t(j)) * std::size_t(dims.x) + std::size_t(i);
+    return (std::size_t(k) * std::size_t(dims.y) + std::size_t(j)) * std::size_t(dims.x) +
+           std::size_t(i);
   }
   float at(int i, int j, int k) const { return values[index(i, j, k)]; }
 
-  /// Trilinear interpolation at a position (mm); outside the grid the nearest boundary value (clamped).
+  /// Trilinear interpolation at a position (mm); outside the grid the nearest boundary value
+  /// (clamped).
   double sample(const glm::dvec3& p) const {
     if (values.empty()) return 0;
     const glm::dvec3 u = glm::clamp((p - origin) / voxelSize, glm::dvec3(0), glm::dvec3(dims - 1));
