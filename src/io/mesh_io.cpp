@@ -7,7 +7,6 @@
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataReader.h>
-#include <vtkSTLReader.h>
 #include <vtkSmartPointer.h>
 #include <vtkXMLPolyDataReader.h>
 
@@ -20,6 +19,7 @@
 #include "mesh_file_checks.hpp"
 #include "ply_reader.hpp"
 #include "quiet_vtk.hpp"
+#include "stl_reader.hpp"
 #include "vtk_mesh.hpp"
 
 namespace lucent::io {
@@ -66,7 +66,7 @@ scene::TriangleMesh readMesh(const std::string& path) {
   else if (ext == ".obj")
     pd = readObj(path);  // lucent's own: VTK's OBJ reader cannot be made safe
   else if (ext == ".stl")
-    pd = readWith<vtkSTLReader>(path);
+    pd = readStl(path);  // lucent's own: VTK's STL reader trusts the triangle count
   else if (ext == ".vtp")
     pd = readWith<vtkXMLPolyDataReader>(path);
   else if (ext == ".vtk")

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 #include <lucent/scene/shapes.hpp>
 
 #include "io/exr_io.hpp"
+#include "io/mesh_io.hpp"
 #include "temp_dir.hpp"
 
 namespace {
@@ -106,6 +108,17 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
   { std::ofstream(dir / "far.obj") << "v 1e300 0 0\n" << tet.substr(8) << "f 2 3 4\n"; }
   { std::ofstream(dir / "huge.ply") << "ply\nformat ascii 1.0\nelement vertex 1000000000\nproperty float x\n"
                                     << "end_header\n0\n"; }
+  const std::string stlFacet = "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n";
+  { std::ofstream(dir / "cut.stl") << "solid s\n" << stlFacet << "endloop\nendfacet\n" << stlFacet; }
+  { std::ofstream(dir / "word.stl") << "solid s\n" << stlFacet << "endloop\nendfacet\nfacet normal 0 x 1\n"; }
+  {
+    std::ofstream bin(dir / "short.stl", std::ios::binary);  // declares 12 triangles, holds 2
+    const std::string header(80, ' ');
+    const unsigned char count[4] = {12, 0, 0, 0};
+    bin << header;
+    bin.write(reinterpret_cast<const char*>(count), 4);
+    bin << std::string(100, '\0');
+  }
   {
     lucent::image::Image env(4, 2);
     env.pixels[1] = glm::vec4(std::nanf(""), 0, 0, 1);
@@ -177,6 +190,10 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
       {"bench --csv " + dir / "b.csv --plot " + dir / "no-such-folder/p.png", "does not exist"},
       {"render --out " + out + " --mesh " + dir / "no-props.ply", "has 100000000 items but no properties"},
       {"render --out " + out + " --mesh " + dir / "far.obj", "not a finite number of at most 1e30"},
+      {"render --out " + out + " --mesh " + dir / "cut.stl", "ends where 'endloop' belongs (it is truncated)"},
+      {"render --out " + out + " --mesh " + dir / "word.stl", "a number expected, not 'x'"},
+      {"render --out " + out + " --mesh " + dir / "short.stl",
+       "a binary STL declaring 12 triangles needs 684 bytes, but the file has 184 (it is truncated"},
       {"render --out " + out + " --light dir:1e200,0,0", "length must be finite"},
       {"compare " + dir / "lit.exr " + dir / "black.exr", "is black everywhere"},
       {"compare " + dir / "lit.exr " + dir / "nan-env.exr", "non-finite value at pixel (1, 0)"},
@@ -198,9 +215,9 @@ TEST_CASE("Every fuzzing input (seeds and past findings) gives an image or a cle
   lucent::test::TempDir dir;
   const std::filesystem::path corpus = std::filesystem::path(LUCENT_SOURCE_DIR) / "fuzz" / "corpus";
   int files = 0;
-  for (const char* kind : {"mesh_obj", "mesh_ply"})
+  for (const std::string kind : {"mesh_obj", "mesh_ply", "mesh_stl"})
     for (const auto& entry : std::filesystem::directory_iterator(corpus / kind)) {
-      const std::string mesh = dir / (std::string("input") + (kind == std::string("mesh_obj") ? ".obj" : ".ply"));
+      const std::string mesh = dir / ("input." + kind.substr(5));
       std::filesystem::copy_file(entry.path(), mesh, std::filesystem::copy_options::overwrite_existing);
       const Run r = lucentCli("render --mesh " + mesh + " --skip-mesh-check --width 8 --height 8 --quiet --out " +
                                   dir / "o.exr",
@@ -209,7 +226,41 @@ TEST_CASE("Every fuzzing input (seeds and past findings) gives an image or a cle
       CHECK((r.code == 0 || r.code == 2));
       ++files;
     }
-  CHECK(files >= 6);
+  CHECK(files >= 9);
+}
+
+TEST_CASE("STL, ASCII and binary: corners welded exactly, so a closed STL renders as a closed mesh") {
+  lucent::test::TempDir dir;
+  const lucent::scene::TriangleMesh sphere = lucent::scene::shapes::sphere(10.0, 2);
+  std::ofstream ascii(dir / "ball-ascii.stl"), binary(dir / "ball.stl", std::ios::binary);
+  ascii << "solid ball\n";
+  binary << std::string(80, ' ');
+  const std::uint32_t count = std::uint32_t(sphere.triangles.size());
+  binary.write(reinterpret_cast<const char*>(&count), 4);  // little-endian on the test machines
+  for (const auto& t : sphere.triangles) {
+    ascii << " facet normal 0 0 0\n  outer loop\n";
+    const float zero[3] = {0, 0, 0};
+    binary.write(reinterpret_cast<const char*>(zero), 12);
+    for (unsigned id : {t.x, t.y, t.z}) {
+      const glm::vec3 p = sphere.positions[id];
+      ascii << std::setprecision(9) << "   vertex " << p.x << " " << p.y << " " << p.z << "\n";
+      binary.write(reinterpret_cast<const char*>(&p), 12);
+    }
+    binary.write("\0\0", 2);
+    ascii << "  endloop\n endfacet\n";
+  }
+  ascii << "endsolid ball\n";
+  ascii.close(), binary.close();
+  for (const char* name : {"ball-ascii.stl", "ball.stl"}) {
+    const lucent::scene::TriangleMesh read = lucent::io::readMesh(dir / name);
+    CHECK(read.positions.size() == sphere.positions.size());  // every shared corner welded
+    CHECK(read.triangles.size() == sphere.triangles.size());
+    const Run r = lucentCli("render --mesh " + dir / name + " --width 8 --height 8 --quiet --out " +
+                                dir / "o.exr",
+                            dir);  // the mesh check finds it closed: no --repair needed
+    INFO(r.err);
+    CHECK(r.code == 0);
+  }
 }
 
 TEST_CASE("--repair: an open, unwelded, partly inside-out scan renders; the report says what changed") {
