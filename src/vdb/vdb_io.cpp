@@ -9,6 +9,7 @@
 
 #include "../io/atomic_file.hpp"
 #include "../util/error.hpp"
+#include "vdb_file_check.hpp"
 
 namespace lucent::vdb {
 
@@ -21,6 +22,7 @@ void initialize() {
 openvdb::io::File openFile(const std::string& path) {
   if (!std::filesystem::exists(path))
     throw InputError("cannot read '" + path + "': no such file; check the path");
+  checkVdbLayout(path);  // OpenVDB trusts the lengths the file declares
   initialize();
   openvdb::io::File file(path);
   try {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
@@ -100,4 +101,35 @@ TEST_CASE("A sparse OpenVDB grid is not densified past the voxel bound, nor read
   CHECK(message([&] {
           vdb::readFloatGrid(dir / "nan.vdb");
         }).find("non-finite value at voxel (1, 0, 0)") != std::string::npos);
+}
+
+TEST_CASE(
+    "A .vdb cut short anywhere, or with a length made huge, is a clear error, not a huge read") {
+  test::TempDir dir;
+  vdb::writeFloatGrid(dir / "ball.vdb", ballDensity(), "density");
+  std::string bytes;
+  {
+    std::ifstream in(dir / "ball.vdb", std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  REQUIRE(bytes.size() > 200);
+  auto throwsInputError = [&](const std::string& content) {
+    std::ofstream(dir / "bad.vdb", std::ios::binary) << content;
+    try {
+      vdb::readFloatGrid(dir / "bad.vdb");
+    } catch (const InputError&) {
+      return true;
+    }
+    return false;
+  };
+  for (std::size_t cut = 0; cut < bytes.size(); cut += 1 + cut / 8) {
+    INFO("cut at " << cut);
+    CHECK(throwsInputError(bytes.substr(0, cut)));
+  }
+  // The grid name's length (after magic, versions, flag, UUID, file metadata count and grid count)
+  // set to 2^31: refused by the layout check before OpenVDB allocates it.
+  const std::size_t nameLength = 8 + 12 + 1 + 36 + 4 + 4;
+  std::string huge = bytes;
+  huge[nameLength + 3] = '\x7f';
+  CHECK(throwsInputError(huge));
 }
