@@ -20,6 +20,7 @@
 #include "../scene/camera.hpp"
 #include "../scene/irradiance.hpp"
 #include "../util/parallel.hpp"
+#include "near_field.hpp"
 #include "rd_sum_kernel.hpp"
 #include "surface_samples.hpp"
 
@@ -80,6 +81,7 @@ class DipoleTruth {
                                           caster, irr, i) * samples.area[i];
       if (progress) progress(double(done += end - begin) / double(samples.size()));
     });
+    mNear = NearField(samples.position, weighted, samples.area, samples.spacing);
     for (std::size_t i = 0; i < samples.size(); ++i) {
       const glm::dvec3& w = weighted[i];
       if (!(w.x > 0 || w.y > 0 || w.z > 0)) continue;
@@ -93,8 +95,14 @@ class DipoleTruth {
     mStats.litSamples = mX.size();
   }
 
-  /// B(xo) = sum_i E_i A_i Rd(|x_i - xo|) (Eq. 3), mm^-2 times the irradiance unit.
+  /// B(xo) = sum_i E_i A_i Rd(|x_i - xo|) (Eq. 3), mm^-2 times the irradiance unit, with the
+  /// samples within nearField().radius() of xo integrated as a disc (near_field.hpp).
   glm::dvec3 radiosity(const glm::dvec3& xo) const {
+    return pointSum(xo) + mNear.correction(xo, mDipole);
+  }
+
+  /// The plain point sum of Eq. 3 (what a spacing far below the mean free path converges with).
+  glm::dvec3 pointSum(const glm::dvec3& xo) const {
     if constexpr (std::is_same_v<T, float>) return radiosityFloatKernel(xo);  // vectorised, same sum
     const T ox = T(xo.x), oy = T(xo.y), oz = T(xo.z);
     double sum[3] = {0, 0, 0};
@@ -114,6 +122,7 @@ class DipoleTruth {
   }
 
   const Stats& stats() const { return mStats; }
+  const NearField& nearField() const { return mNear; }
   const optics::Dipole<T>& dipole() const { return mDipole; }
 
   /// The lit samples, structure-of-arrays: positions, E_i A_i per channel, and areas A_i.
@@ -134,6 +143,7 @@ class DipoleTruth {
   RdKernelConstants mKernel = RdKernelConstants::from(mDipole);
   std::vector<T> mX, mY, mZ, mW[3];
   std::vector<double> mArea;
+  NearField mNear;
   Stats mStats;
 };
 

@@ -23,7 +23,10 @@ class JensenBuhlerTree {
  public:
   /// @param maxLeafSamples samples a leaf may hold before it splits
   explicit JensenBuhlerTree(const DipoleTruth<T>& truth, double epsilon, std::size_t maxLeafSamples = 8)
-      : mDipole(truth.dipole()), mEpsilon(epsilon), mLeafSize(std::max<std::size_t>(1, maxLeafSamples)) {
+      : mDipole(truth.dipole()),
+        mNear(&truth.nearField()),
+        mEpsilon(epsilon),
+        mLeafSize(std::max<std::size_t>(1, maxLeafSamples)) {
     const std::size_t n = truth.litCount();
     mPosition.resize(n);
     mPower.resize(n);
@@ -45,8 +48,14 @@ class JensenBuhlerTree {
     build(0, 0, n, c - half, c + half, 0);
   }
 
-  /// B(xo) by the hierarchical approximation (Eq. 3 of texture-space-importance-sampling).
+  /// B(xo) by the hierarchical approximation (Eq. 3 of texture-space-importance-sampling), with the
+  /// truth's near field integrated as a disc (near_field.hpp; the samples within its radius are
+  /// never clustered: a node there has area / distance^2 above any useful epsilon).
   glm::dvec3 radiosity(const glm::dvec3& xo) const {
+    return treeSum(xo) + mNear->correction(xo, mDipole);
+  }
+
+  glm::dvec3 treeSum(const glm::dvec3& xo) const {
     glm::dvec3 sum(0);
     if (mNodes.empty()) return sum;
     std::vector<std::uint32_t> stack{0};
@@ -124,6 +133,7 @@ class JensenBuhlerTree {
   }
 
   optics::Dipole<T> mDipole;
+  const NearField* mNear;  ///< the truth's, which outlives the tree
   double mEpsilon;
   std::size_t mLeafSize;
   std::vector<glm::dvec3> mPosition, mPower;

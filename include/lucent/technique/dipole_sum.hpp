@@ -20,9 +20,9 @@ namespace lucent::technique {
 namespace detail {
 
 /// Memory of one surface sample: position, normals and area (80 bytes), its lit copy for the float
-/// kernel (28 bytes).
+/// kernel (28 bytes), its near-field entry (32 bytes, near_field.hpp).
 inline constexpr double kBytesPerSample =
-    3 * sizeof(glm::dvec3) + sizeof(double) + 7 * sizeof(float);
+    3 * sizeof(glm::dvec3) + sizeof(double) + 7 * sizeof(float) + 8 * sizeof(float);
 
 inline std::vector<KnobSpec> dipoleSumKnobs() {
   return {
@@ -33,8 +33,9 @@ inline std::vector<KnobSpec> dipoleSumKnobs() {
                      Phase::Prepare, true),
       KnobSpec::integer(
           "max-samples", 2000000, 1, 50000000,
-          "sample budget (about 110 bytes each); a spacing from fraction is coarsened (with a "
-          "warning) to respect it, an explicit spacing above it is refused",
+          "sample budget (about " + std::to_string(int(kBytesPerSample)) +
+              " bytes each); a spacing from fraction is coarsened (with a warning) to respect "
+              "it, an explicit spacing above it is refused",
           Phase::Prepare),
       KnobSpec::integer("env-strata", 16, 1, 256,
                         "environment light: strata x strata directions per sample"),
