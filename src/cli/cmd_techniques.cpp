@@ -72,7 +72,9 @@ std::string techniqueJson(const technique::Technique& t) {
       .add("vtk_name", technique::camelCase(t.name))
       .add("summary", t.summary)
       .add("paper", t.paper)
-      .add("required_library", t.requiredLibrary);
+      .add("required_library", t.requiredLibrary)
+      .add("model", t.model)
+      .add("valid_range", t.validRange);
   return o.add("capabilities", caps)
       .raw("knobs", jsonArray(knobs))
       .raw("default_sweep", jsonArray(sweep))
@@ -82,6 +84,8 @@ std::string techniqueJson(const technique::Technique& t) {
 std::string techniqueText(const technique::Technique& t) {
   std::string s = t.name + ": " + t.summary + "\n  paper: " + t.paper + "\n";
   if (!t.requiredLibrary.empty()) s += "  requires: " + t.requiredLibrary + "\n";
+  if (!t.model.empty()) s += "  model: " + t.model + "\n";
+  if (!t.validRange.empty()) s += "  valid for: " + t.validRange + "\n";
   s += "  can:";
   for (const auto& [name, value] : flags(t.capabilities))
     if (value) s += std::string(" ") + name;

@@ -6,6 +6,7 @@
 #include <lucent/quadgraph/surface_mapping.hpp>
 #include <lucent/reference/vertex_radiosity.hpp>
 #include <lucent/technique/technique.hpp>
+#include <lucent/technique/validity.hpp>
 
 #include "../io/vtk_quadgraph.hpp"
 #include "../render/quadgraph_pipeline.hpp"
@@ -229,6 +230,25 @@ Technique quadgraphTechnique() {
   c.precomputeScaling = "TetGen: O(tets log tets); graph and transfers O(nodes)";
   c.frameScaling = "O(nodes x iterations) per channel";
   t.defaultSweep = {{"K", {"2", "1", "0.5"}}};
+  t.quickKnobs = {{"levels", "1"}, {"env-strata", "4"}};
+  t.model = "diffusion";
+  t.validRange = validity::thickRange() +
+                 ", with mesh edges (the surface nodes' spacing) "
+                 "of at most 2 diffusion lengths 1/sigma_tr of the base material";
+  t.validity = [](const SceneDescription& scene, const KnobValues&) {
+    const std::string thick = validity::opticallyThick(scene.mesh, scene.medium.material);
+    if (!thick.empty()) return thick;
+    const double edge = meanEdgeLength(scene.mesh);
+    const double length = opticalScales(scene.medium.material).shortestDiffusionLength;
+    if (edge <= 2 * length) return std::string();
+    // Coarse tets smear the absorption near the surface: a low-albedo material came out up to
+    // 90 times too bright (tests/integration/test_hard_cases.cpp).
+    return "the mesh's mean edge is " + lengthText(edge) + ", more than 2 diffusion lengths (" +
+           lengthText(length) +
+           "): the graph does not resolve the absorption and the image comes out too bright; "
+           "subdivide the mesh (e.g. vtkLinearSubdivisionFilter) to edges below " +
+           lengthText(2 * length) + ", or use reference";
+  };
   t.prepare = [](const SceneDescription& scene, const KnobValues& knobs, Statistics& stats) {
     return std::make_unique<QuadGraphTechnique>(scene, knobs, stats);
   };

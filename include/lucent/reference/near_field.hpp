@@ -91,16 +91,21 @@ class NearField {
     glm::dvec3 out;
     for (int ch = 0; ch < 3; ++ch) {
       const double disc = power[ch] / area * double(dipole.channel[ch].cumulative(T(mRadius)));
-      out[ch] = discWeight(double(dipole.channel[ch].meanFreePath())) * (disc - pointTerms[ch]);
+      out[ch] = discWeight(rdWidth(dipole.channel[ch])) * (disc - pointTerms[ch]);
     }
     return out;
   }
 
-  /// 0 where the spacing resolves the mean free path l_u (spacing <= l_u), 1 from 4 l_u, linear
-  /// between.
-  double discWeight(double meanFreePath) const {
+  /// 0 where the spacing resolves Rd (spacing <= its width w), 1 from 4 w, linear between.
+  double discWeight(double width) const {
     const double spacing = mRadius / kRadiusInSpacings;
-    return std::clamp((spacing / meanFreePath - 1) / 3, 0.0, 1.0);
+    return std::clamp((spacing / width - 1) / 3, 0.0, 1.0);
+  }
+  /// The length Rd falls off over: l_u, or 1/sigma_tr where absorption cuts it shorter.
+  template <class Channel>
+  static double rdWidth(const Channel& c) {
+    const double tail = c.sigmaTr > 0 ? 1 / double(c.sigmaTr) : double(c.zr);
+    return std::min(double(c.zr), tail);
   }
 
  private:

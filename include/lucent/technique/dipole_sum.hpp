@@ -14,6 +14,7 @@
 #include "../reference/dipole_truth.hpp"
 #include "../reference/jensen_buhler.hpp"
 #include "technique.hpp"
+#include "validity.hpp"
 
 namespace lucent::technique {
 
@@ -140,6 +141,18 @@ std::unique_ptr<Prepared> makeDipoleSum(const SceneDescription& scene, const Kno
   return std::make_unique<DipoleSum<Summation>>(scene, knobs, stats, std::move(summation));
 }
 
+/// The dipole sums hold at any size above the diffusion limit: the near field (near_field.hpp)
+/// keeps a coarse spacing right on large objects.
+inline void setDipoleSumRange(Technique& t) {
+  t.model = "dipole";
+  t.validRange = validity::thickRange() +
+                 "; no upper size (a spacing coarser than the "
+                 "mean free path is integrated as a disc near each point)";
+  t.validity = [](const SceneDescription& scene, const KnobValues&) {
+    return validity::opticallyThick(scene.mesh, scene.medium.material);
+  };
+  t.quickKnobs = {{"max-samples", "20000"}, {"env-strata", "4"}};
+}
 }  // namespace detail
 
 inline Technique referenceTechnique() {
@@ -156,6 +169,7 @@ inline Technique referenceTechnique() {
   t.capabilities.groundTruth = true;
   t.defaultSweep = {{"fraction", {"2", "1", "0.5", "0.25"}}};
   t.referenceKnobs = {{"fraction", "0.125"}};
+  detail::setDipoleSumRange(t);
   t.prepare = [](const SceneDescription& scene, const KnobValues& knobs, Statistics& stats) {
     return detail::makeDipoleSum(scene, knobs, stats,
                                  [](const auto& truth, const SceneDescription& s,
@@ -185,6 +199,7 @@ inline Technique jensenBuhlerTechnique() {
   t.capabilities = detail::dipoleSumCapabilities();
   t.capabilities.frameScaling = "O(points x log(lit samples)) for epsilon > 0";
   t.defaultSweep = {{"epsilon", {"1", "0.3", "0.1", "0.03"}}};
+  detail::setDipoleSumRange(t);
   t.prepare = [](const SceneDescription& scene, const KnobValues& knobs, Statistics& stats) {
     const double epsilon = knobs.real("epsilon");
     return detail::makeDipoleSum(scene, knobs, stats,

@@ -184,6 +184,12 @@ inline Technique pathtraceTechnique() {
   c.frameScaling = "O(pixels x spp x scattering events); error ~ 1/sqrt(spp)";
   t.defaultSweep = {{"spp", {"4", "16", "64"}}};
   t.referenceKnobs = {{"spp", "1024"}};
+  t.quickKnobs = {{"spp", "4"}};
+  t.model = "radiative transfer";
+  t.validRange =
+      "any size and medium: the error is Monte Carlo noise (reported as the standard error); a "
+      "point or directional light behind a refracting boundary is reached only by light subpaths, "
+      "which is noisy on high-albedo media";
   t.prepare = [](const SceneDescription&, const KnobValues& knobs, Statistics&) {
     return std::make_unique<detail::PathTracing>(knobs);
   };

@@ -73,10 +73,25 @@ class Registry {
                        "; techniques that can: " + (able.empty() ? "none" : able));
   }
 
-  /// check, prepare, one frame, radiance completed from radiosity.
+  /// Fails before any work when the scene lies outside the technique's valid range with these
+  /// knobs (Technique::validity), with the reason, the fix and the techniques whose range holds.
+  void checkRange(const Technique& t, const SceneDescription& scene,
+                  const KnobValues& knobs) const {
+    const std::string why = t.validity ? t.validity(scene, knobs) : "";
+    if (why.empty()) return;
+    const std::string able = names([&](const Technique& o) {
+      return &o != &t && (!o.validity || o.validity(scene, o.values()).empty());
+    });
+    throw RequestError("technique '" + t.name + "' is outside its valid range here: " + why +
+                       " (valid for: " + t.validRange + "; techniques valid here with their " +
+                       "defaults: " + (able.empty() ? "none" : able) + ")");
+  }
+
+  /// check, checkRange, prepare, one frame, radiance completed from radiosity.
   Rendered render(const Technique& t, const SceneDescription& scene, const KnobValues& knobs,
                   const ShadeRequest& request) const {
     check(t, scene, request);
+    checkRange(t, scene, knobs);
     Rendered out;
     const Stopwatch clock;
     std::unique_ptr<Prepared> prepared = t.prepare(scene, knobs, out.stats);

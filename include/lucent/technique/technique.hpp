@@ -58,7 +58,17 @@ struct Technique {
   Capabilities capabilities;
   std::vector<Sweep> defaultSweep;  ///< what `lucent bench` sweeps when no --sweep is given
   KnobList
-      referenceKnobs;  ///< the knobs of a converged result, when this technique is the reference
+      referenceKnobs;   ///< the knobs of a converged result, when this technique is the reference
+  KnobList quickKnobs;  ///< the cheapest settings still worth looking at: smoke tests, the
+                        ///< hard-case matrix (tests/integration/test_hard_cases.cpp)
+  /// The light-transport model it approximates ("dipole", "diffusion", "radiative transfer"):
+  /// techniques of one model converge to the same image, so each is measured against its model's
+  /// ground truth.
+  std::string model;
+  std::string validRange;  ///< the scenes its approximations hold for, in words (validity.hpp)
+  /// "" when the scene lies in its valid range with these knobs, else the reason and the fix;
+  /// checked before any work. Empty function: valid everywhere.
+  std::function<std::string(const SceneDescription&, const KnobValues&)> validity;
   std::function<std::unique_ptr<Prepared>(const SceneDescription&, const KnobValues&, Statistics&)>
       prepare;
 

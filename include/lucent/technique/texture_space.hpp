@@ -17,6 +17,7 @@
 #include "../atlas/tsis_evaluator.hpp"
 #include "../reference/vertex_radiosity.hpp"
 #include "technique.hpp"
+#include "validity.hpp"
 
 namespace lucent::technique {
 
@@ -244,6 +245,27 @@ inline Capabilities textureSpaceCapabilities() {
   return c;
 }
 
+/// The atlas texel, estimated before the atlas exists: the surface over the texels, half of which
+/// the shelf packing fills (measured 0.5-0.7 on the built-in shapes).
+inline double atlasTexel(const SceneDescription& scene, const KnobValues& knobs) {
+  const double side = double(knobs.integer("atlas-resolution"));
+  return std::sqrt(surfaceArea(scene.mesh) / (0.5 * side * side));
+}
+/// The translucent shadow map's texel: its square covers the object's bounding sphere.
+inline double mapTexel(const SceneDescription& scene, const KnobValues& knobs) {
+  return scene.mesh.bounds().diagonal() / double(knobs.integer("map"));
+}
+
+inline std::string atlasInRange(const SceneDescription& scene, const KnobValues& knobs) {
+  return validity::resolvesRd(
+      atlasTexel(scene, knobs), "the atlas texel", scene.medium.material,
+      "raise atlas-resolution (at most 8192), or use reference or jensen-buhler");
+}
+inline std::string mapInRange(const SceneDescription& scene, const KnobValues& knobs) {
+  return validity::resolvesRd(mapTexel(scene, knobs), "the shadow-map texel", scene.medium.material,
+                              "raise map, or use reference or jensen-buhler");
+}
+
 }  // namespace detail
 
 inline Technique tsisTechnique() {
@@ -266,6 +288,16 @@ inline Technique tsisTechnique() {
   // atlas and its position map as RGBA32F textures (8192^2 would be 1 GiB each).
   t.capabilities.gpuTwinKnobs = {{"samples", 65536}, {"atlas-resolution", 4096}};
   t.defaultSweep = {{"samples", {"400", "1600", "6400"}}};
+  t.quickKnobs = {{"samples", "256"}, {"atlas-resolution", "256"}, {"env-strata", "4"}};
+  t.model = "dipole";
+  t.validRange =
+      validity::thickRange() +
+      ", with an atlas texel (about sqrt(2 area) / atlas-resolution) of at most 2 widths "
+      "of Rd (the shorter of the mean free path and 1/sigma_tr)";
+  t.validity = [](const SceneDescription& scene, const KnobValues& knobs) {
+    const std::string thick = validity::opticallyThick(scene.mesh, scene.medium.material);
+    return thick.empty() ? detail::atlasInRange(scene, knobs) : thick;
+  };
   t.prepare = [](const SceneDescription& scene, const KnobValues& knobs, Statistics& stats) {
     return std::make_unique<detail::Tsis>(scene, knobs, stats);
   };
@@ -290,6 +322,17 @@ inline Technique hybridTechnique() {
   t.capabilities = detail::textureSpaceCapabilities();
   t.capabilities.environmentLights = false;  // a translucent shadow map needs a light view
   t.defaultSweep = {{"samples", {"400", "900", "3600"}}};
+  t.quickKnobs = {{"samples", "256"}, {"atlas-resolution", "256"}, {"map", "128"},
+                  {"rings", "8"},     {"ring-samples", "8"},       {"env-strata", "4"}};
+  t.model = "dipole";
+  t.validRange = validity::thickRange() +
+                 ", with atlas and shadow-map texels of at most 2 widths of Rd (the shorter of the "
+                 "mean free path and 1/sigma_tr)";
+  t.validity = [](const SceneDescription& scene, const KnobValues& knobs) {
+    std::string why = validity::opticallyThick(scene.mesh, scene.medium.material);
+    if (why.empty()) why = detail::atlasInRange(scene, knobs);
+    return why.empty() ? detail::mapInRange(scene, knobs) : why;
+  };
   t.prepare = [](const SceneDescription& scene, const KnobValues& knobs, Statistics& stats) {
     return std::make_unique<detail::Hybrid>(scene, knobs, stats);
   };
@@ -311,6 +354,16 @@ inline Technique tsmTechnique() {
   t.capabilities.precomputeScaling = "none";
   t.capabilities.frameScaling = "O(lights x map texels + points x L x C)";
   t.defaultSweep = {{"rings", {"5", "10", "20", "40"}}};
+  t.quickKnobs = {{"map", "128"}, {"rings", "8"}, {"ring-samples", "8"}};
+  t.model = "dipole";
+  t.validRange =
+      validity::thickRange() +
+      ", with a shadow-map texel (bounding-box diagonal / map) of at most 2 widths of Rd "
+      "(the shorter of the mean free path and 1/sigma_tr)";
+  t.validity = [](const SceneDescription& scene, const KnobValues& knobs) {
+    const std::string thick = validity::opticallyThick(scene.mesh, scene.medium.material);
+    return thick.empty() ? detail::mapInRange(scene, knobs) : thick;
+  };
   t.prepare = [](const SceneDescription&, const KnobValues& knobs, Statistics&) {
     return std::make_unique<detail::Tsm>(knobs);
   };
