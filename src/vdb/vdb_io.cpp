@@ -26,7 +26,8 @@ openvdb::io::File openFile(const std::string& path) {
   initialize();
   openvdb::io::File file(path);
   try {
-    file.open();
+    file.open(/*delayLoad=*/false);  // read in readGrid, inside the try: a delayed load throws
+                                     // where nothing can catch it (a finding of fuzz_volume_vdb)
   } catch (const std::exception& e) {
     throw InputError("cannot read '" + path + "' as OpenVDB: " + e.what() + "; is it a .vdb file?");
   }

@@ -1,6 +1,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -132,4 +133,19 @@ TEST_CASE(
   std::string huge = bytes;
   huge[nameLength + 3] = '\x7f';
   CHECK(throwsInputError(huge));
+}
+
+TEST_CASE("Every .vdb fuzzing input (seed and past findings) reads or gives a clear error") {
+  const std::filesystem::path corpus =
+      std::filesystem::path(LUCENT_SOURCE_DIR) / "fuzz" / "corpus" / "volume_vdb";
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(corpus)) {
+    INFO(entry.path());
+    try {
+      vdb::readFloatGrid(entry.path().string());
+    } catch (const InputError&) {
+    }
+    ++files;
+  }
+  CHECK(files >= 3);
 }
