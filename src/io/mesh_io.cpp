@@ -79,7 +79,14 @@ scene::TriangleMesh readMesh(const std::string& path) {
                      "': the reader found no points; is the file a valid " + ext + " mesh?");
   checkPolyData(pd, path);
   bool flipped = false;
-  scene::TriangleMesh mesh = fromPolyData(pd, &flipped);
+  std::size_t missing = 0;
+  scene::TriangleMesh mesh = fromPolyData(pd, &flipped, &missing);
+  if (missing > 0)
+    std::fprintf(stderr,
+                 "lucent: note: mesh '%s': %zu triangles are missing where non-convex polygons "
+                 "could not be triangulated (non-planar, self-overlapping or degenerate); "
+                 "their edges show as holes: triangulate the mesh in its modeller\n",
+                 path.c_str(), missing);
   if (mesh.triangles.empty())
     throw InputError("mesh '" + path +
                      "' has no polygons (only points or lines); lucent needs a closed surface");

@@ -10,10 +10,11 @@
 
 namespace lucent::io {
 
-scene::TriangleMesh fromPolyData(vtkPolyData* polyData, bool* flipped) {
+scene::TriangleMesh fromPolyData(vtkPolyData* polyData, bool* flipped, std::size_t* missing) {
   vtkadapter::PolyDataMesh converted =
       vtkadapter::meshFromData(polyData);  // as the VTK modules convert
   if (flipped) *flipped = converted.flipped;
+  if (missing) *missing = converted.missingTriangles;
   return std::move(converted.mesh);
 }
 

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include <lucent/scene/mesh_check.hpp>
 #include <lucent/scene/shapes.hpp>
 
 #include "io/exr_io.hpp"
@@ -589,3 +590,25 @@ TEST_CASE(
   CHECK_FALSE(std::filesystem::exists(dir / "x.exr"));
 }
 #endif
+
+TEST_CASE("A closed box with a sliver quad and T-junctions is closed, not 'holes' (issue 21)") {
+  lucent::test::TempDir dir;
+  // The top face split at x = 0.5 by a quad 1e-7 wide; the front and back faces carry the sliver's
+  // corners on their edges (6-corner polygons with nearly coincident corners). VTK's ear cut
+  // dropped both kinds; the convex fan keeps them.
+  std::ofstream(dir / "sliver.obj")
+      << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+         "v 0.5 0 1\nv 0.5000001 0 1\nv 0.5000001 1 1\nv 0.5 1 1\n"
+         "f 1 4 3 2\nf 1 2 6 10 9 5\nf 2 3 7 6\nf 3 4 8 12 11 7\nf 4 1 5 8\nf 5 9 12 8\n"
+         "f 9 10 11 12\nf 10 6 7 11\n";
+  const lucent::scene::TriangleMesh mesh = lucent::io::readMesh(dir / "sliver.obj");
+  CHECK(mesh.triangles.size() == 2 + 4 + 2 + 4 + 2 + 2 + 2 + 2);
+  const lucent::scene::MeshReport report = lucent::scene::checkMesh(mesh);
+  INFO(report.boundaryEdges << " boundary edges");
+  CHECK(report.ok());
+  const Run r = lucentCli(
+      "render --mesh " + dir / "sliver.obj" + " --width 8 --height 8 --quiet --out " + dir / "o.exr",
+      dir);
+  INFO(r.err);
+  CHECK(r.code == 0);
+}

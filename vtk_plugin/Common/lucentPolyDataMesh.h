@@ -8,6 +8,9 @@
 #ifndef lucentPolyDataMesh_h
 #define lucentPolyDataMesh_h
 
+#include <algorithm>
+#include <array>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -31,20 +34,86 @@ struct PolyDataMesh {
   vtkSmartPointer<vtkPolyData>
       triangles;         ///< the same triangles and points as VTK data (for output arrays)
   bool flipped = false;  ///< the input was wound inside out and was turned around
+  /// Triangles missing from non-convex polygons VTK's triangulation left out (non-planar,
+  /// self-overlapping or degenerate): their edges show as holes, so front ends say so before the
+  /// mesh check. (Strips are not counted.)
+  std::size_t missingTriangles = 0;
 };
 
 namespace detail {
-/// Triangulated and welded polydata of one leaf.
-inline vtkSmartPointer<vtkPolyData> weldedTriangles(vtkPolyData* poly) {
+/// A fan over a convex polygon from the corner whose thinnest fan triangle is widest, or false
+/// for a non-convex one (left to VTK's ear cut). Collinear corners (T-junctions) are fine.
+inline bool convexFan(vtkPolyData* poly, vtkIdType n, const vtkIdType* ids, vtkCellArray* out) {
+  std::vector<std::array<double, 3>> p(static_cast<std::size_t>(n));
+  for (vtkIdType k = 0; k < n; ++k) poly->GetPoint(ids[k], p[std::size_t(k)].data());
+  auto cross = [&](std::size_t a, std::size_t b, std::size_t c) {
+    const double u[3] = {p[b][0] - p[a][0], p[b][1] - p[a][1], p[b][2] - p[a][2]};
+    const double v[3] = {p[c][0] - p[a][0], p[c][1] - p[a][1], p[c][2] - p[a][2]};
+    return std::array<double, 3>{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                                 u[0] * v[1] - u[1] * v[0]};
+  };
+  const std::size_t m = p.size();
+  std::array<double, 3> normal{0, 0, 0};  // Newell's normal: the polygon's area vector
+  for (std::size_t k = 0; k < m; ++k) {
+    const auto& a = p[k];
+    const auto& b = p[(k + 1) % m];
+    normal[0] += (a[1] - b[1]) * (a[2] + b[2]);
+    normal[1] += (a[2] - b[2]) * (a[0] + b[0]);
+    normal[2] += (a[0] - b[0]) * (a[1] + b[1]);
+  }
+  auto along = [&](const std::array<double, 3>& c) {
+    return c[0] * normal[0] + c[1] * normal[1] + c[2] * normal[2];
+  };
+  for (std::size_t k = 0; k < m; ++k)  // every turn the same way (or straight): convex
+    if (along(cross(k, (k + 1) % m, (k + 2) % m)) < 0) return false;
+  std::size_t apex = 0;
+  double best = -1;
+  for (std::size_t k = 0; k < m; ++k) {
+    double thinnest = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 1; j + 1 < m; ++j)
+      thinnest = std::min(thinnest, along(cross(k, (k + j) % m, (k + j + 1) % m)));
+    if (thinnest > best) best = thinnest, apex = k;
+  }
+  for (std::size_t j = 1; j + 1 < m; ++j) {
+    const vtkIdType t[3] = {ids[apex], ids[(apex + j) % m], ids[(apex + j + 1) % m]};
+    out->InsertNextCell(3, t);
+  }
+  return true;
+}
+
+/// The polygons with every convex one fanned (convexFan): VTK's ear cut drops thin quads and
+/// polygons with nearly coincident corners (a sliver of 1e-7 of the object made a closed box
+/// report holes); a fan cannot fail. `expected` counts the triangles the polygons should give.
+inline vtkSmartPointer<vtkPolyData> convexPolygonsFanned(vtkPolyData* poly, std::size_t& expected) {
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(poly);
+  vtkNew<vtkCellArray> polys;
+  vtkCellArray* cells = poly->GetPolys();
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  for (cells->InitTraversal(); cells->GetNextCell(n, ids);) {
+    if (n >= 3) expected += std::size_t(n - 2);
+    if (n < 4 || n > 1024 || !convexFan(poly, n, ids, polys)) polys->InsertNextCell(n, ids);
+  }
+  out->SetPolys(polys);
+  return out;
+}
+
+/// Triangulated and welded polydata of one leaf; `missing` grows by the triangles VTK's
+/// triangulation left out.
+inline vtkSmartPointer<vtkPolyData> weldedTriangles(vtkPolyData* poly, std::size_t& missing) {
   vtkNew<vtkTriangleFilter> triangulate;
+  std::size_t expected = 0;
+  vtkSmartPointer<vtkPolyData> split;
   if (poly->GetCellGhostArray()) {  // a distributed piece's ghost cells belong to another rank
     vtkNew<vtkPolyData> owned;
     owned->ShallowCopy(poly);
     owned->RemoveGhostCells();
-    triangulate->SetInputData(owned);
+    split = convexPolygonsFanned(owned, expected);
   } else {
-    triangulate->SetInputData(poly);
+    split = convexPolygonsFanned(poly, expected);
   }
+  triangulate->SetInputData(split);
   triangulate->PassVertsOff();
   triangulate->PassLinesOff();
   vtkNew<vtkCleanPolyData> weld;
@@ -54,6 +123,9 @@ inline vtkSmartPointer<vtkPolyData> weldedTriangles(vtkPolyData* poly) {
   weld->ConvertLinesToPointsOff();
   weld->ConvertPolysToLinesOff();
   weld->ConvertStripsToPolysOff();
+  triangulate->Update();
+  const std::size_t made = std::size_t(triangulate->GetOutput()->GetNumberOfPolys());
+  if (poly->GetNumberOfStrips() == 0 && made < expected) missing += expected - made;
   weld->Update();
   vtkSmartPointer<vtkPolyData> out = weld->GetOutput();
   return out;
@@ -93,7 +165,8 @@ inline PolyDataMesh meshFromData(vtkDataObject* data, vtkMatrix4x4* matrix = nul
   points->SetDataTypeToDouble();
   PolyDataMesh out;
   std::vector<vtkSmartPointer<vtkPolyData>> welded;
-  for (vtkPolyData* leaf : leaves) welded.push_back(detail::weldedTriangles(leaf));
+  for (vtkPolyData* leaf : leaves)
+    welded.push_back(detail::weldedTriangles(leaf, out.missingTriangles));
   for (const auto& tri : welded) {
     const auto base = vtkIdType(out.mesh.positions.size());
     for (vtkIdType i = 0; i < tri->GetNumberOfPoints(); ++i) {
