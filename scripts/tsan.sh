@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # ThreadSanitizer over the parallel paths: the unit and integration tests (the hard-case matrix runs
-# every technique's TBB loops) built with -fsanitize=thread in build-tsan/. Not part of CI (a TSan
-# build is slow and Debian's TBB is not instrumented); results and how to read them:
-# docs/reliability.md. Extra arguments go to the integration tests (e.g. -tc='Hard-case*').
+# every technique's parallel loops) built with -fsanitize=thread in build-tsan/. Debian's libtbb is
+# not instrumented, so under TSan lucent's parallel loop runs on std::threads (src/util/tbb_parallel.hpp).
+# Not part of CI (slow); results and how to read them: docs/reliability.md. Extra arguments go to the
+# integration tests (e.g. -tc='Hard-case*').
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ -f build-tsan/CMakeCache.txt ] ||

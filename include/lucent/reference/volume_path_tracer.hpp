@@ -135,14 +135,19 @@ class VolumePathTracer {
 
  private:
   double autoGuideRadius() const {
-    // 1 / sigma_tr of the first medium, averaged over channels, at least one transport mean free path.
+    // 1 / sigma_tr of the first medium, averaged over channels, between one and ten transport mean
+    // free paths: without absorption 1/sigma_tr is infinite, and aiming light entries over the whole
+    // object left a 100 m spectralon sphere black (the camera's walk ends within a few mean free
+    // paths of its entry). The disc's pdf is a mixture with a uniform part: any scale is unbiased.
     for (std::size_t i = 1; i < mScene.media.size(); ++i) {
       const Medium& m = mScene.media[i];
       if (m.vacuum()) continue;
       const glm::dvec3 sigmaTPrime = m.sigmaA + (1 - m.g) * m.sigmaS;
       const glm::dvec3 sigmaTr = glm::sqrt(3.0 * m.sigmaA * sigmaTPrime);
       const double meanTr = (sigmaTr.x + sigmaTr.y + sigmaTr.z) / 3, meanT = (sigmaTPrime.x + sigmaTPrime.y + sigmaTPrime.z) / 3;
-      const double length = std::max(meanTr > 0 ? 1 / meanTr : mRadius, meanT > 0 ? 1 / meanT : 0.0);
+      const double meanFreePath = meanT > 0 ? 1 / meanT : mRadius;
+      const double length =
+          std::clamp(meanTr > 0 ? 1 / meanTr : mRadius, meanFreePath, 10 * meanFreePath);
       return std::min(length, mRadius);
     }
     return mRadius;
