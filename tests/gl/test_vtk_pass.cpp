@@ -10,8 +10,10 @@
 #include <vector>
 
 #include <vtkActor.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkCommand.h>
 #include <vtkLight.h>
 #include <vtkNew.h>
 #include <vtkOutputWindow.h>
@@ -248,6 +250,27 @@ TEST_CASE("vtkLucentPass: hard cases stay finite; bad input is reported, not cra
         peak = std::max<double>(peak, f.radiance[i]);
       CHECK(peak > 0);  // every case is lit and scatters
     }
+  }
+  SUBCASE(
+      "outside tsis's range (a 1 m skin sphere, 1024 atlas): drawn, with one warning naming it") {
+    const auto data = sphere(1.0, 48);
+    PassScene scene(data, side, 64);
+    std::vector<std::string> warnings;
+    vtkNew<vtkCallbackCommand> onWarning;
+    onWarning->SetClientData(&warnings);
+    onWarning->SetCallback([](vtkObject*, unsigned long, void* sink, void* message) {
+      static_cast<std::vector<std::string>*>(sink)->push_back(static_cast<const char*>(message));
+    });
+    scene.pass->AddObserver(vtkCommand::WarningEvent, onWarning);
+    scene.pass->SetMaterial("skin1");
+    scene.pass->SetSizeMm(1e3);
+    scene.render();
+    scene.render();  // once per reason, not every frame
+    REQUIRE(warnings.size() == 1);
+    CHECK(warnings[0].find("outside tsis's valid range: the atlas texel is") != std::string::npos);
+    scene.pass->SetSizeMm(30);  // in range: no new warning
+    scene.render();
+    CHECK(warnings.size() == 1);
   }
   SUBCASE("degenerate triangles among good ones") {
     auto data = sphere(3.0, 32);

@@ -209,6 +209,25 @@ void vtkLucentPass::PrintSelf(ostream& os, vtkIndent indent) {
      << indent << "KeepFrame: " << this->KeepFrame << "\n";
 }
 
+void vtkLucentPass::WarnOutsideRange(const vtkLucentSurface& surface) {
+  // tsis's stated range, with the pass's knobs. The CLI and the filter refuse outside it; an
+  // interactive view keeps drawing (finite, but not what tsis promises) and says so once.
+  static const lucent::technique::Technique tsis = lucent::technique::tsisTechnique();
+  const auto material = lucent::optics::findMaterial(this->Material);
+  if (!material) return;
+  lucent::technique::SceneDescription scene;
+  scene.mesh = surface.GetMillimetreMesh();
+  scene.medium.material = *material;
+  const lucent::technique::KnobValues knobs =
+      tsis.values({{"samples", std::to_string(this->Samples)},
+                   {"atlas-resolution", std::to_string(this->AtlasResolution)}});
+  const std::string why = tsis.validity(scene, knobs);
+  if (why.empty() || why == this->LastRangeWarning) return;
+  this->LastRangeWarning = why;
+  vtkWarningMacro(<< "vtkLucentPass (tsis's GPU twin) is outside tsis's valid range: " << why
+                  << " (valid for: " << tsis.validRange << ")");
+}
+
 void vtkLucentPass::ReportError(const std::string& message) {
   if (message == this->LastError) return;  // once, not every frame
   this->LastError = message;
@@ -501,6 +520,7 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
     if (!surface->Update(actor, this->SizeMm, frame.atlasSize, error))
       continue;  // lines, points: not ours
     ++this->TranslucentActorCount;
+    this->WarnOutsideRange(*surface);
     if (!this->RenderLightDepth(window, surface, frame) ||
         !this->RenderAtlasIrradiance(window, surface, frame) ||
         !this->DrawImportanceSamples(window, frame) ||

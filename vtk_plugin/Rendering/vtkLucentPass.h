@@ -147,6 +147,7 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   void Composite(vtkOpenGLRenderWindow* window);
   void ReadBackFrame(int width, int height);
   void ReportError(const std::string& message);
+  void WarnOutsideRange(const vtkLucentSurface& surface);
 
   std::string Material = "skin1";
   double SizeMm = 0.0;
@@ -160,6 +161,7 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   bool KeepFrame = false;
   int TranslucentActorCount = 0;
   std::string LastError;
+  std::string LastRangeWarning;  ///< once per reason, not every frame
 };
 
 #endif

@@ -79,6 +79,7 @@ bool vtkLucentSurface::Update(vtkActor* actor, double sizeMm, int atlasResolutio
     return false;
   }
 
+  this->MillimetreMesh = mm;
   const std::vector<glm::vec3> normals = world.vertexNormals();
   std::vector<float> corners;
   corners.reserve(world.triangles.size() * 3 * kFloatsPerCorner);

@@ -1,9 +1,10 @@
 /// @file vtkLucentSurface.h
-/// @brief One translucent actor as the GPU path needs it (private to Lucent::Rendering): its triangles
-/// in world coordinates with vertex normals, the texture atlas of texture-space-importance-sampling
-/// Sec. 2.2 (built on the CPU by lucent/atlas/texture_atlas.hpp) and one vertex buffer with, per corner,
-/// position, normal, atlas coordinate and the texel area weight A_S / n_T of Eq. 7.
-/// Rebuilt only when the data, the actor's matrix, the size or the atlas resolution change.
+/// @brief One translucent actor as the GPU path needs it (private to Lucent::Rendering): its
+/// triangles in world coordinates with vertex normals, the texture atlas of
+/// texture-space-importance-sampling Sec. 2.2 (built on the CPU by lucent/atlas/texture_atlas.hpp)
+/// and one vertex buffer with, per corner, position, normal, atlas coordinate and the texel area
+/// weight A_S / n_T of Eq. 7. Rebuilt only when the data, the actor's matrix, the size or the atlas
+/// resolution change.
 #ifndef vtkLucentSurface_h
 #define vtkLucentSurface_h
 
@@ -17,6 +18,8 @@ class vtkActor;
 class vtkOpenGLBufferObject;
 class vtkOpenGLVertexArrayObject;
 class vtkShaderProgram;
+#include <lucent/scene/mesh.hpp>
+
 class vtkWindow;
 
 class vtkLucentSurface : public vtkObject {
@@ -38,6 +41,8 @@ class vtkLucentSurface : public vtkObject {
   double GetMillimetresPerUnit() const { return this->MillimetresPerUnit; }
   const double* GetCentre() const { return this->Centre; }
   double GetRadius() const { return this->Radius; }
+  /// The surface in millimetres, centred (what the atlas is laid out on; tsis's range reads it).
+  const lucent::scene::TriangleMesh& GetMillimetreMesh() const { return this->MillimetreMesh; }
 
  protected:
   vtkLucentSurface();
@@ -58,6 +63,7 @@ class vtkLucentSurface : public vtkObject {
   vtkShaderProgram* BoundProgram[3] = {nullptr, nullptr, nullptr};
   int CornerCount = 0;
   double MillimetresPerUnit = 1, Centre[3] = {0, 0, 0}, Radius = 1;
+  lucent::scene::TriangleMesh MillimetreMesh;
 };
 
 #endif
