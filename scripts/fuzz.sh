@@ -18,7 +18,7 @@ export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
 for t in "${targets[@]}"; do
   seeds=fuzz/corpus/${t#fuzz_}
   mkdir -p "build-fuzz/corpus/$t"
-  echo "lucent fuzz: $t for ${seconds} s (seeds: $seeds)"
+
   rc=0
   # OpenVDB's tree reader allocates a compressed block's declared size before reading it
   # (bloscFromStream): outside ASan a corrupt size is an exception lucent turns into exit 2
@@ -26,6 +26,7 @@ for t in "${targets[@]}"; do
   # So CI runs the .vdb corpus (seeds and past findings) without mutating; LUCENT_FUZZ_VDB=1 mutates.
   limit=(-max_total_time="$seconds")
   [ "$t" = fuzz_volume_vdb ] && [ "${LUCENT_FUZZ_VDB:-0}" != 1 ] && limit=(-runs=0)
+  echo "lucent fuzz: $t ${limit[0]#-} (seeds: $seeds)"
   build-fuzz/fuzz/"$t" "${limit[@]}" -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 \
     -artifact_prefix="build-fuzz/findings/$t-" "build-fuzz/corpus/$t" "$seeds" > "build-fuzz/$t.log" 2>&1 || rc=$?
   grep -E "^(stat::number_of_executed_units|stat::new_units_added|==[0-9]+==ERROR|SUMMARY)" "build-fuzz/$t.log" || true

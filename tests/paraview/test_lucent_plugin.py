@@ -112,6 +112,7 @@ def check_generated_properties(path):
         fail("properties not in the registry: %s; registry knobs without a property: %s"
              % (sorted(extra), sorted(expected - present)))
     # The properties reach the filter's knobs by their qualified names (the XML's initial_string).
+    probe.SizeMm = 20.0  # a 20 mm skin sphere: inside tsis's valid range (1.7 mm is not)
     probe.Technique = "tsis"
     probe.TsisSamples = 512
     probe.TsisSampler = "row"
