@@ -101,17 +101,33 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
   { std::ofstream(dir / "range.obj") << tet << "f 2 3 99999\n"; }
   { std::ofstream(dir / "zero.obj") << tet << "f 2 3 0\n"; }
   { std::ofstream(dir / "nan.obj") << "v nan 0 0\n" << tet.substr(8) << "f 2 3 4\n"; }
-  const std::string plyHeader = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
-                                "property float z\nelement face ";
-  { std::ofstream(dir / "faces.ply") << plyHeader << "10000000\nproperty list uchar int vertex_indices\nend_header\n"
-                                     << "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n"; }
-  { std::ofstream(dir / "no-props.ply") << "ply\nformat ascii 1.0\nelement vertex 100000000\nend_header\n"; }
+  const std::string plyHeader =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nelement face ";
+  {
+    std::ofstream(dir / "faces.ply")
+        << plyHeader << "10000000\nproperty list uchar int vertex_indices\nend_header\n"
+        << "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n";
+  }
+  {
+    std::ofstream(dir / "no-props.ply")
+        << "ply\nformat ascii 1.0\nelement vertex 100000000\nend_header\n";
+  }
   { std::ofstream(dir / "far.obj") << "v 1e300 0 0\n" << tet.substr(8) << "f 2 3 4\n"; }
-  { std::ofstream(dir / "huge.ply") << "ply\nformat ascii 1.0\nelement vertex 1000000000\nproperty float x\n"
-                                    << "end_header\n0\n"; }
-  const std::string stlFacet = "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n";
-  { std::ofstream(dir / "cut.stl") << "solid s\n" << stlFacet << "endloop\nendfacet\n" << stlFacet; }
-  { std::ofstream(dir / "word.stl") << "solid s\n" << stlFacet << "endloop\nendfacet\nfacet normal 0 x 1\n"; }
+  {
+    std::ofstream(dir / "huge.ply")
+        << "ply\nformat ascii 1.0\nelement vertex 1000000000\nproperty float x\n"
+        << "end_header\n0\n";
+  }
+  const std::string stlFacet =
+      "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n";
+  {
+    std::ofstream(dir / "cut.stl") << "solid s\n" << stlFacet << "endloop\nendfacet\n" << stlFacet;
+  }
+  {
+    std::ofstream(dir / "word.stl") << "solid s\n"
+                                    << stlFacet << "endloop\nendfacet\nfacet normal 0 x 1\n";
+  }
   {
     std::ofstream bin(dir / "short.stl", std::ios::binary);  // declares 12 triangles, holds 2
     const std::string header(80, ' ');
@@ -168,33 +184,46 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
       {"render --out " + out + " --method tsis --knob eval=face", "eval must be pixel or vertex"},
       {"render --out " + out + " --method hybrid --knob c=0", "c must be > 0"},
       {"render --out " + out + " --method tsm --knob rings=0", "rings must be an integer in"},
-      {"render --out " + out + " --mesh " + dir / "range.obj", "names vertex 99999, but 4 are defined before it"},
-      {"render --out " + out + " --mesh " + dir / "range.obj --skip-mesh-check", "names vertex 99999"},
+      {"render --out " + out + " --mesh " + dir / "range.obj",
+       "names vertex 99999, but 4 are defined before it"},
+      {"render --out " + out + " --mesh " + dir / "range.obj --skip-mesh-check",
+       "names vertex 99999"},
       {"render --out " + out + " --mesh " + dir / "zero.obj", "names vertex 0"},
       {"render --out " + out + " --mesh " + dir / "nan.obj", "has 'nan', not a finite number"},
       {"render --out " + out + " --mesh " + dir / "faces.ply", "truncated or its header is wrong"},
       {"bench --mesh " + dir / "faces.ply", "truncated or its header is wrong"},
       {"render --out " + out + " --mesh " + dir / "huge.ply", "more than lucent reads"},
-      {"render --out " + out + " --light dir:0,1,0:1e308", "intensities must lie in [0, 1e12], not 1e+308"},
-      {"render --out " + out + " --light env:uniform:-1", "intensities must lie in [0, 1e12], not -1"},
-      {"render --out " + out + " --light point:0,100,-100:-1,-1,-1", "intensities must lie in [0, 1e12]"},
-      {"render --out " + out + " --light env:" + dir / "nan-env.exr", "texel (1, 0) has radiance nan"},
-      {"render --out " + out + " --sigma-a 1e308,0.1,0.1 --sigma-s 1,1,1", "must lie in [0, 1e6] mm^-1"},
+      {"render --out " + out + " --light dir:0,1,0:1e308",
+       "intensities must lie in [0, 1e12], not 1e+308"},
+      {"render --out " + out + " --light env:uniform:-1",
+       "intensities must lie in [0, 1e12], not -1"},
+      {"render --out " + out + " --light point:0,100,-100:-1,-1,-1",
+       "intensities must lie in [0, 1e12]"},
+      {"render --out " + out + " --light env:" + dir / "nan-env.exr",
+       "texel (1, 0) has radiance nan"},
+      {"render --out " + out + " --sigma-a 1e308,0.1,0.1 --sigma-s 1,1,1",
+       "must lie in [0, 1e6] mm^-1"},
       {"render --out " + out + " --knob spacing=1e-9", "use a larger spacing or raise max-samples"},
       {"render --out " + out + " --knob spacing=-1", "spacing must be in [0,"},
-      {"render --out " + out + " --knob max-samples=1e9", "max-samples must be an integer in [1, 50000000]"},
+      {"render --out " + out + " --knob max-samples=1e9",
+       "max-samples must be an integer in [1, 50000000]"},
       {"render --out " + out + " --knob fraction=nan", "must be a finite number, not 'nan'"},
-      {"render --out " + out + " --method pathtrace --knob stderr=" + dir / "se.png", "must name a .exr file"},
-      {"render --out " + out + " --method quadgraph --knob vtu=" + dir / "g.txt", "must name a .vtu file"},
+      {"render --out " + out + " --method pathtrace --knob stderr=" + dir / "se.png",
+       "must name a .exr file"},
+      {"render --out " + out + " --method quadgraph --knob vtu=" + dir / "g.txt",
+       "must name a .vtu file"},
       {"render --out " + out + " --out " + dir / "no-such-folder/y.exr", "does not exist"},
       {"render --out " + out + " --stats " + dir / "no-such-folder/s.json", "does not exist"},
       {"bench --csv " + dir / "b.csv --plot " + dir / "no-such-folder/p.png", "does not exist"},
-      {"render --out " + out + " --mesh " + dir / "no-props.ply", "has 100000000 items but no properties"},
+      {"render --out " + out + " --mesh " + dir / "no-props.ply",
+       "has 100000000 items but no properties"},
       {"render --out " + out + " --mesh " + dir / "far.obj", "not a finite number of at most 1e30"},
-      {"render --out " + out + " --mesh " + dir / "cut.stl", "ends where 'endloop' belongs (it is truncated)"},
+      {"render --out " + out + " --mesh " + dir / "cut.stl",
+       "ends where 'endloop' belongs (it is truncated)"},
       {"render --out " + out + " --mesh " + dir / "word.stl", "a number expected, not 'x'"},
       {"render --out " + out + " --mesh " + dir / "short.stl",
-       "a binary STL declaring 12 triangles needs 684 bytes, but the file has 184 (it is truncated"},
+       "a binary STL declaring 12 triangles needs 684 bytes, but the file has 184 (it is "
+       "truncated"},
       {"render --out " + out + " --light dir:1e200,0,0", "length must be finite"},
       {"compare " + dir / "lit.exr " + dir / "black.exr", "is black everywhere"},
       {"compare " + dir / "lit.exr " + dir / "nan-env.exr", "non-finite value at pixel (1, 0)"},
@@ -207,22 +236,27 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
     CHECK(r.out.empty());
   }
   CHECK_FALSE(std::filesystem::exists(out));
-  CHECK_FALSE(std::filesystem::exists(dir / "b.csv"));  // bench checked --plot before writing its table
+  CHECK_FALSE(
+      std::filesystem::exists(dir / "b.csv"));  // bench checked --plot before writing its table
   for (const auto& e : std::filesystem::recursive_directory_iterator(dir.path))
     CHECK_FALSE(contains(e.path().string(), ".tmp-"));
 }
 
-TEST_CASE("Every fuzzing input (seeds and past findings) gives an image or a clear error, never a crash") {
+TEST_CASE(
+    "Every fuzzing input (seeds and past findings) gives an image or a clear error, never a "
+    "crash") {
   lucent::test::TempDir dir;
   const std::filesystem::path corpus = std::filesystem::path(LUCENT_SOURCE_DIR) / "fuzz" / "corpus";
   int files = 0;
   for (const std::string kind : {"mesh_obj", "mesh_ply", "mesh_stl"})
     for (const auto& entry : std::filesystem::directory_iterator(corpus / kind)) {
       const std::string mesh = dir / ("input." + kind.substr(5));
-      std::filesystem::copy_file(entry.path(), mesh, std::filesystem::copy_options::overwrite_existing);
-      const Run r = lucentCli("render --mesh " + mesh + " --skip-mesh-check --width 8 --height 8 --quiet --out " +
-                                  dir / "o.exr",
-                              dir);
+      std::filesystem::copy_file(entry.path(), mesh,
+                                 std::filesystem::copy_options::overwrite_existing);
+      const Run r =
+          lucentCli("render --mesh " + mesh +
+                        " --skip-mesh-check --width 8 --height 8 --quiet --out " + dir / "o.exr",
+                    dir);
       INFO(entry.path() << ": " << r.err);
       CHECK((r.code == 0 || r.code == 2));
       ++files;
@@ -230,7 +264,8 @@ TEST_CASE("Every fuzzing input (seeds and past findings) gives an image or a cle
   CHECK(files >= 9);
 }
 
-TEST_CASE("STL, ASCII and binary: corners welded exactly, so a closed STL renders as a closed mesh") {
+TEST_CASE(
+    "STL, ASCII and binary: corners welded exactly, so a closed STL renders as a closed mesh") {
   lucent::test::TempDir dir;
   const lucent::scene::TriangleMesh sphere = lucent::scene::shapes::sphere(10.0, 2);
   std::ofstream ascii(dir / "ball-ascii.stl"), binary(dir / "ball.stl", std::ios::binary);
@@ -256,32 +291,36 @@ TEST_CASE("STL, ASCII and binary: corners welded exactly, so a closed STL render
     const lucent::scene::TriangleMesh read = lucent::io::readMesh(dir / name);
     CHECK(read.positions.size() == sphere.positions.size());  // every shared corner welded
     CHECK(read.triangles.size() == sphere.triangles.size());
-    const Run r = lucentCli("render --mesh " + dir / name + " --width 8 --height 8 --quiet --out " +
-                                dir / "o.exr",
-                            dir);  // the mesh check finds it closed: no --repair needed
+    const Run r = lucentCli(
+        "render --mesh " + dir / name + " --width 8 --height 8 --quiet --out " + dir / "o.exr",
+        dir);  // the mesh check finds it closed: no --repair needed
     INFO(r.err);
     CHECK(r.code == 0);
   }
 }
 
-TEST_CASE("--repair: an open, unwelded, partly inside-out scan renders; the report says what changed") {
+TEST_CASE(
+    "--repair: an open, unwelded, partly inside-out scan renders; the report says what changed") {
   lucent::test::TempDir dir;
-  // A laser-scan-like sphere: a triangle soup (every corner its own point, as STL stores it; the reader
-  // welds it), a cap of faces missing (a hole), one face wound the other way.
+  // A laser-scan-like sphere: a triangle soup (every corner its own point, as STL stores it; the
+  // reader welds it), a cap of faces missing (a hole), one face wound the other way.
   const lucent::scene::TriangleMesh sphere = lucent::scene::shapes::sphere(10.0, 3);
   std::ofstream obj(dir / "scan.obj");
   std::size_t written = 0;
   for (std::size_t t = 0; t < sphere.triangles.size(); ++t) {
     const auto& tri = sphere.triangles[t];
-    const glm::vec3 a = sphere.positions[tri.x], b = sphere.positions[tri.y], c = sphere.positions[tri.z];
+    const glm::vec3 a = sphere.positions[tri.x], b = sphere.positions[tri.y],
+                    c = sphere.positions[tri.z];
     if ((a.z + b.z + c.z) / 3 > 8.5) continue;  // the hole: a cap cut off
     const bool flip = t == 7;
-    for (const glm::vec3& p : {a, flip ? c : b, flip ? b : c}) obj << "v " << p.x << " " << p.y << " " << p.z << "\n";
+    for (const glm::vec3& p : {a, flip ? c : b, flip ? b : c})
+      obj << "v " << p.x << " " << p.y << " " << p.z << "\n";
     obj << "f " << 3 * written + 1 << " " << 3 * written + 2 << " " << 3 * written + 3 << "\n";
     ++written;
   }
   obj.close();
-  const std::string args = "render --mesh " + dir / "scan.obj" + " --width 24 --height 24 --quiet --out " + dir / "r.exr";
+  const std::string args = "render --mesh " + dir / "scan.obj" +
+                           " --width 24 --height 24 --quiet --out " + dir / "r.exr";
   const Run refused = lucentCli(args, dir);
   CHECK(refused.code == 2);
   CHECK(contains(refused.err, "pass --repair"));
@@ -296,9 +335,12 @@ TEST_CASE("--repair: an open, unwelded, partly inside-out scan renders; the repo
   CHECK(lit > 100);
 }
 
-TEST_CASE("A subnormal spacing fraction ends at the sample budget, with the warning (it used to spin forever)") {
+TEST_CASE(
+    "A subnormal spacing fraction ends at the sample budget, with the warning (it used to spin "
+    "forever)") {
   lucent::test::TempDir dir;
-  const Run r = lucentCli("render --knob fraction=5e-324 --width 8 --height 8 --quiet --out " + dir / "f.exr", dir);
+  const Run r = lucentCli(
+      "render --knob fraction=5e-324 --width 8 --height 8 --quiet --out " + dir / "f.exr", dir);
   CHECK(r.code == 0);
   CHECK(contains(r.err, "sample budget reached"));
 }
@@ -606,9 +648,9 @@ TEST_CASE("A closed box with a sliver quad and T-junctions is closed, not 'holes
   const lucent::scene::MeshReport report = lucent::scene::checkMesh(mesh);
   INFO(report.boundaryEdges << " boundary edges");
   CHECK(report.ok());
-  const Run r = lucentCli(
-      "render --mesh " + dir / "sliver.obj" + " --width 8 --height 8 --quiet --out " + dir / "o.exr",
-      dir);
+  const Run r = lucentCli("render --mesh " + dir / "sliver.obj" +
+                              " --width 8 --height 8 --quiet --out " + dir / "o.exr",
+                          dir);
   INFO(r.err);
   CHECK(r.code == 0);
 }

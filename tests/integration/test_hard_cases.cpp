@@ -105,7 +105,8 @@ TEST_CASE(
             CHECK(o.nonNegative);
             REQUIRE(o.litPixels > 0);
             // Diffusion is refused on optically thin objects by every diffusion technique.
-            if (t.model != "radiative transfer") CHECK(opticalSize(c) >= technique::validity::kMinMeanFreePaths);
+            if (t.model != "radiative transfer")
+              CHECK(opticalSize(c) >= technique::validity::kMinMeanFreePaths);
             if (truth && !truth->refused) {
               for (int k = 0; k < 3; ++k) {
                 if (!(truth->ratio[k] > 1e-3)) continue;  // a channel with no diffuse light

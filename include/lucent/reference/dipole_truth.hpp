@@ -1,8 +1,9 @@
 #pragma once
 /// @file dipole_truth.hpp
-/// @brief The brute-force dipole truth: irradiance at dense surface samples and the exact Rd sum for every
-/// shaded point, L(xo, wo) = (1/pi) Ft(eta, wo) B(xo), B(xo) = sum_i E_i A_i Rd(|x_i - xo|)
-/// (texture-space-importance-sampling Eq. 2-3). The model truth every dipole technique is measured against.
+/// @brief The brute-force dipole truth: irradiance at dense surface samples and the exact Rd sum
+/// for every shaded point, L(xo, wo) = (1/pi) Ft(eta, wo) B(xo), B(xo) = sum_i E_i A_i Rd(|x_i -
+/// xo|) (texture-space-importance-sampling Eq. 2-3). The model truth every dipole technique is
+/// measured against.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -36,17 +37,19 @@ struct SpacingChoice {
 };
 
 inline SpacingChoice chooseSpacing(const scene::TriangleMesh& mesh, double minMeanFreePath,
-                                   double fractionOfMeanFreePath = 0.5, std::size_t maxSamples = 2000000,
+                                   double fractionOfMeanFreePath = 0.5,
+                                   std::size_t maxSamples = 2000000,
                                    double minSamplesPerDiagonal = 64) {
   SpacingChoice c;
   c.meanFreePath = minMeanFreePath;
   const double diag = mesh.bounds().diagonal();
   c.spacing = std::min(fractionOfMeanFreePath * minMeanFreePath, diag / minSamplesPerDiagonal);
-  // Below 1e-9 of the diagonal every count saturates; the floor also keeps the coarsening below moving
-  // (1.25 times a subnormal spacing rounds back to itself).
+  // Below 1e-9 of the diagonal every count saturates; the floor also keeps the coarsening below
+  // moving (1.25 times a subnormal spacing rounds back to itself).
   c.spacing = std::max(c.spacing, 1e-9 * diag);
-  // Each triangle gets at least one sample, so coarsening stops once every triangle has one (the spacing
-  // then exceeds the longest edge): a budget below the triangle count cannot be met by spacing alone.
+  // Each triangle gets at least one sample, so coarsening stops once every triangle has one (the
+  // spacing then exceeds the longest edge): a budget below the triangle count cannot be met by
+  // spacing alone.
   std::size_t count = countSurfaceSamples(mesh, c.spacing);
   while (count > maxSamples && count > mesh.triangles.size()) {
     c.spacing *= 1.25;
@@ -67,9 +70,11 @@ class DipoleTruth {
     glm::dvec3 transmittedPower{0};  ///< sum E_i A_i: the power entering the surface
   };
 
-  DipoleTruth(const SurfaceSamples& samples, const optics::Dipole<T>& dipole, const std::vector<scene::Light>& lights,
-              const scene::RayCaster& caster, const scene::IrradianceSettings& irr,
-              const util::ParallelFor& parallelFor = util::serialFor, const util::Progress& progress = {})
+  DipoleTruth(const SurfaceSamples& samples, const optics::Dipole<T>& dipole,
+              const std::vector<scene::Light>& lights, const scene::RayCaster& caster,
+              const scene::IrradianceSettings& irr,
+              const util::ParallelFor& parallelFor = util::serialFor,
+              const util::Progress& progress = {})
       : mDipole(dipole) {
     mStats.samples = samples.size();
     mStats.spacing = samples.spacing;
@@ -77,8 +82,9 @@ class DipoleTruth {
     std::atomic<std::size_t> done{0};
     parallelFor(samples.size(), [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i)
-        weighted[i] = scene::irradianceAt(samples.position[i], samples.normal[i], samples.faceNormal[i], lights,
-                                          caster, irr, i) * samples.area[i];
+        weighted[i] = scene::irradianceAt(samples.position[i], samples.normal[i],
+                                          samples.faceNormal[i], lights, caster, irr, i) *
+                      samples.area[i];
       if (progress) progress(double(done += end - begin) / double(samples.size()));
     });
     mNear = NearField(samples.position, weighted, samples.area, samples.spacing);
@@ -103,7 +109,8 @@ class DipoleTruth {
 
   /// The plain point sum of Eq. 3 (what a spacing far below the mean free path converges with).
   glm::dvec3 pointSum(const glm::dvec3& xo) const {
-    if constexpr (std::is_same_v<T, float>) return radiosityFloatKernel(xo);  // vectorised, same sum
+    if constexpr (std::is_same_v<T, float>)
+      return radiosityFloatKernel(xo);  // vectorised, same sum
     const T ox = T(xo.x), oy = T(xo.y), oz = T(xo.z);
     double sum[3] = {0, 0, 0};
     const std::size_t n = mX.size();
@@ -127,13 +134,18 @@ class DipoleTruth {
 
   /// The lit samples, structure-of-arrays: positions, E_i A_i per channel, and areas A_i.
   std::size_t litCount() const { return mX.size(); }
-  glm::dvec3 litPosition(std::size_t i) const { return {double(mX[i]), double(mY[i]), double(mZ[i])}; }
-  glm::dvec3 litPower(std::size_t i) const { return {double(mW[0][i]), double(mW[1][i]), double(mW[2][i])}; }
+  glm::dvec3 litPosition(std::size_t i) const {
+    return {double(mX[i]), double(mY[i]), double(mZ[i])};
+  }
+  glm::dvec3 litPower(std::size_t i) const {
+    return {double(mW[0][i]), double(mW[1][i]), double(mW[2][i])};
+  }
   double litArea(std::size_t i) const { return mArea[i]; }
 
  private:
   glm::dvec3 radiosityFloatKernel(const glm::dvec3& xo) const {
-    const RdKernelSamples samples{mX.data(), mY.data(), mZ.data(), mW[0].data(), mW[1].data(), mW[2].data(), mX.size()};
+    const RdKernelSamples samples{mX.data(),    mY.data(),    mZ.data(), mW[0].data(),
+                                  mW[1].data(), mW[2].data(), mX.size()};
     double out[3];
     rdSumFloat(samples, mKernel, float(xo.x), float(xo.y), float(xo.z), out);
     return {out[0], out[1], out[2]};
@@ -152,33 +164,35 @@ struct ShadingPoint {
   glm::dvec3 position;
   double cosOut = 0;  ///< n . (direction to the eye), clamped to [0, 1]
   std::uint32_t triangle = 0;
-  double u = 0, v = 0;  ///< barycentrics of the triangle's vertices 1 and 2 (for per-vertex shading)
+  double u = 0,
+         v = 0;  ///< barycentrics of the triangle's vertices 1 and 2 (for per-vertex shading)
 };
 
-/// Whether an evaluator shades from the whole ShadingPoint (e.g. per-vertex interpolation) rather than
-/// from (position, cosOut).
+/// Whether an evaluator shades from the whole ShadingPoint (e.g. per-vertex interpolation) rather
+/// than from (position, cosOut).
 template <class E, class = void>
 struct ShadesPoints : std::false_type {};
 template <class E>
-struct ShadesPoints<E, std::void_t<decltype(std::declval<const E&>().radiance(std::declval<const ShadingPoint&>()))>>
-    : std::true_type {};
+struct ShadesPoints<E, std::void_t<decltype(std::declval<const E&>().radiance(
+                           std::declval<const ShadingPoint&>()))>> : std::true_type {};
 
 /// The first surface hit through each pixel centre, or nothing (background).
-inline std::vector<std::optional<ShadingPoint>> primaryHits(const scene::PinholeCamera& camera,
-                                                            const scene::TriangleMesh& mesh,
-                                                            const std::vector<glm::vec3>& vertexNormals,
-                                                            const scene::RayCaster& caster,
-                                                            const util::ParallelFor& parallelFor) {
+inline std::vector<std::optional<ShadingPoint>> primaryHits(
+    const scene::PinholeCamera& camera, const scene::TriangleMesh& mesh,
+    const std::vector<glm::vec3>& vertexNormals, const scene::RayCaster& caster,
+    const util::ParallelFor& parallelFor) {
   std::vector<std::optional<ShadingPoint>> hits(std::size_t(camera.width) * camera.height);
   parallelFor(hits.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
       const scene::Ray ray = camera.primaryRay(double(i % camera.width), double(i / camera.width));
-      const auto hit = caster.intersect(ray.origin, ray.direction, 0, std::numeric_limits<double>::infinity());
+      const auto hit =
+          caster.intersect(ray.origin, ray.direction, 0, std::numeric_limits<double>::infinity());
       if (!hit) continue;
-      const glm::dvec3 n =
-          scene::shadingNormal(mesh, vertexNormals, hit->triangle, glm::dvec3(1 - hit->u - hit->v, hit->u, hit->v));
+      const glm::dvec3 n = scene::shadingNormal(mesh, vertexNormals, hit->triangle,
+                                                glm::dvec3(1 - hit->u - hit->v, hit->u, hit->v));
       const double cosOut = std::clamp(-glm::dot(n, ray.direction), 0.0, 1.0);
-      hits[i] = ShadingPoint{ray.origin + hit->t * ray.direction, cosOut, hit->triangle, hit->u, hit->v};
+      hits[i] =
+          ShadingPoint{ray.origin + hit->t * ray.direction, cosOut, hit->triangle, hit->u, hit->v};
     }
   });
   return hits;
@@ -188,7 +202,8 @@ inline std::vector<std::optional<ShadingPoint>> primaryHits(const scene::Pinhole
 /// radiance in RGB, coverage in A.
 template <class Evaluator>
 image::Image renderTruth(const Evaluator& truth, const scene::PinholeCamera& camera,
-                         const std::vector<std::optional<ShadingPoint>>& hits, const util::ParallelFor& parallelFor,
+                         const std::vector<std::optional<ShadingPoint>>& hits,
+                         const util::ParallelFor& parallelFor,
                          const util::Progress& progress = {}) {
   image::Image img(camera.width, camera.height);
   std::atomic<std::size_t> done{0};
@@ -199,8 +214,10 @@ image::Image renderTruth(const Evaluator& truth, const scene::PinholeCamera& cam
         const auto& hit = hits[y * camera.width + x];
         if (!hit) continue;
         glm::dvec3 l;
-        if constexpr (ShadesPoints<Evaluator>::value) l = truth.radiance(*hit);
-        else l = truth.radiance(hit->position, hit->cosOut);
+        if constexpr (ShadesPoints<Evaluator>::value)
+          l = truth.radiance(*hit);
+        else
+          l = truth.radiance(hit->position, hit->cosOut);
         img.at(x, int(y)) = glm::vec4(glm::vec3(l), 1.0f);
       }
       if (progress) progress(double(++done) / double(rows));

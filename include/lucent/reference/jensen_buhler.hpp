@@ -1,11 +1,12 @@
 #pragma once
 /// @file jensen_buhler.hpp
-/// @brief Jensen and Buhler 2002, "A Rapid Hierarchical Rendering Technique for Translucent Materials":
-/// the irradiance samples go into an octree whose nodes store their total power sum E_i A_i, total area
-/// and power-weighted position; B(xo) descends the tree and uses a whole node as one source when it is
-/// small as seen from xo, i.e. its area over squared distance is below the error bound epsilon (their
-/// Sec. 3.2 criterion), and xo is outside its box. epsilon = 0 visits every sample: the exact sum.
-/// texture-space-importance-sampling used it as ground truth and speed baseline.
+/// @brief Jensen and Buhler 2002, "A Rapid Hierarchical Rendering Technique for Translucent
+/// Materials": the irradiance samples go into an octree whose nodes store their total power sum E_i
+/// A_i, total area and power-weighted position; B(xo) descends the tree and uses a whole node as
+/// one source when it is small as seen from xo, i.e. its area over squared distance is below the
+/// error bound epsilon (their Sec. 3.2 criterion), and xo is outside its box. epsilon = 0 visits
+/// every sample: the exact sum. texture-space-importance-sampling used it as ground truth and speed
+/// baseline.
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
@@ -22,7 +23,8 @@ template <class T>
 class JensenBuhlerTree {
  public:
   /// @param maxLeafSamples samples a leaf may hold before it splits
-  explicit JensenBuhlerTree(const DipoleTruth<T>& truth, double epsilon, std::size_t maxLeafSamples = 8)
+  explicit JensenBuhlerTree(const DipoleTruth<T>& truth, double epsilon,
+                            std::size_t maxLeafSamples = 8)
       : mDipole(truth.dipole()),
         mNear(&truth.nearField()),
         mEpsilon(epsilon),
@@ -42,7 +44,8 @@ class JensenBuhlerTree {
     glm::dvec3 lo = mPosition[0], hi = mPosition[0];
     for (const auto& p : mPosition) lo = glm::min(lo, p), hi = glm::max(hi, p);
     // A cube, so children are cubes too.
-    const double half = 0.5 * std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) * (1 + 1e-9) + 1e-12;
+    const double half =
+        0.5 * std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) * (1 + 1e-9) + 1e-12;
     const glm::dvec3 c = 0.5 * (lo + hi);
     mNodes.resize(1);
     build(0, 0, n, c - half, c + half, 0);
@@ -65,7 +68,8 @@ class JensenBuhlerTree {
       stack.pop_back();
       const glm::dvec3 d = xo - node.center;
       const double dist2 = glm::dot(d, d);
-      const bool inside = glm::all(glm::greaterThanEqual(xo, node.lo)) && glm::all(glm::lessThanEqual(xo, node.hi));
+      const bool inside =
+          glm::all(glm::greaterThanEqual(xo, node.lo)) && glm::all(glm::lessThanEqual(xo, node.hi));
       if (!inside && node.area < mEpsilon * dist2) {
         sum += node.power * glm::dvec3(mDipole.rd(T(std::sqrt(dist2))));
       } else if (node.firstChild == 0) {
@@ -75,14 +79,16 @@ class JensenBuhlerTree {
         }
       } else {
         for (int c = 0; c < 8; ++c)
-          if (mNodes[node.firstChild + c].end > mNodes[node.firstChild + c].begin) stack.push_back(node.firstChild + c);
+          if (mNodes[node.firstChild + c].end > mNodes[node.firstChild + c].begin)
+            stack.push_back(node.firstChild + c);
       }
     }
     return sum;
   }
 
   glm::dvec3 radiance(const glm::dvec3& xo, double cosOut) const {
-    return radiosity(xo) * (optics::fresnelTransmittance(cosOut, double(mDipole.eta)) / optics::kPi);
+    return radiosity(xo) *
+           (optics::fresnelTransmittance(cosOut, double(mDipole.eta)) / optics::kPi);
   }
 
   std::size_t nodeCount() const { return mNodes.size(); }
@@ -91,12 +97,14 @@ class JensenBuhlerTree {
   struct Node {
     glm::dvec3 lo, hi, center, power{0};
     double area = 0;
-    std::uint32_t begin = 0, end = 0, firstChild = 0;  // firstChild 0: leaf (the root is never a child)
+    std::uint32_t begin = 0, end = 0,
+                  firstChild = 0;  // firstChild 0: leaf (the root is never a child)
   };
 
-  /// Fills the already allocated node `index`; children get 8 contiguous new slots, then recurse. No
-  /// reference into mNodes is held across the recursion (the vector grows).
-  void build(std::uint32_t index, std::size_t begin, std::size_t end, glm::dvec3 lo, glm::dvec3 hi, int depth) {
+  /// Fills the already allocated node `index`; children get 8 contiguous new slots, then recurse.
+  /// No reference into mNodes is held across the recursion (the vector grows).
+  void build(std::uint32_t index, std::size_t begin, std::size_t end, glm::dvec3 lo, glm::dvec3 hi,
+             int depth) {
     Node node;
     node.lo = lo, node.hi = hi, node.begin = std::uint32_t(begin), node.end = std::uint32_t(end);
     glm::dvec3 weighted(0);
@@ -120,7 +128,8 @@ class JensenBuhlerTree {
     std::vector<std::uint32_t> bucket[8];
     for (std::size_t k = begin; k < end; ++k) {
       const glm::dvec3& p = mPosition[mOrder[k]];
-      bucket[int(p.x >= mid.x) | (int(p.y >= mid.y) << 1) | (int(p.z >= mid.z) << 2)].push_back(mOrder[k]);
+      bucket[int(p.x >= mid.x) | (int(p.y >= mid.y) << 1) | (int(p.z >= mid.z) << 2)].push_back(
+          mOrder[k]);
     }
     std::size_t k = begin;
     for (int c = 0; c < 8; ++c) {

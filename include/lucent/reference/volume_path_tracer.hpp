@@ -1,17 +1,19 @@
 #pragma once
 /// @file volume_path_tracer.hpp
-/// @brief The physical truth: unbiased volumetric path tracing of the radiative transfer equation inside
-/// the closed surfaces of a MediumScene (homogeneous or density-field media, nested bodies, cavities,
-/// Fresnel or null interfaces, HG phase), RGB with hero-channel MIS.
+/// @brief The physical truth: unbiased volumetric path tracing of the radiative transfer equation
+/// inside the closed surfaces of a MediumScene (homogeneous or density-field media, nested bodies,
+/// cavities, Fresnel or null interfaces, HG phase), RGB with hero-channel MIS.
 ///
 /// How each kind of light is reached:
 /// - environment: camera paths that leave the scene look it up (every scattering order);
 /// - point and directional lights, every interface index-matched: next-event estimation from each
 ///   scattering vertex, through null interfaces (every order);
-/// - point and directional lights behind a refracting interface: light subpaths (light_subpaths.hpp)
-///   joined to each camera segment at a point drawn by equiangular sampling (Kulla & Fajardo 2012), whose
-///   pdf cancels the 1/d^2 of the join (distance-sampled joins have infinite variance). Paths whose
-///   every scatter-to-scatter edge is specular, single scattering among them, cannot be sampled then.
+/// - point and directional lights behind a refracting interface: light subpaths
+/// (light_subpaths.hpp)
+///   joined to each camera segment at a point drawn by equiangular sampling (Kulla & Fajardo 2012),
+///   whose pdf cancels the 1/d^2 of the join (distance-sampled joins have infinite variance). Paths
+///   whose every scatter-to-scatter edge is specular, single scattering among them, cannot be
+///   sampled then.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -33,8 +35,8 @@ namespace lucent::reference {
 
 class VolumePathTracer {
  public:
-  VolumePathTracer(const MediumScene& scene, const scene::RayCaster& caster, const std::vector<scene::Light>& lights,
-                   const PathTracerSettings& settings)
+  VolumePathTracer(const MediumScene& scene, const scene::RayCaster& caster,
+                   const std::vector<scene::Light>& lights, const PathTracerSettings& settings)
       : mScene(scene), mCaster(caster), mSettings(settings), mLights(lights) {
     const scene::Bounds b = scene.mesh.bounds();
     mCentre = b.center();
@@ -45,7 +47,8 @@ class VolumePathTracer {
       if (const auto* p = std::get_if<scene::PointLight>(&light)) {
         e.kind = LightEmitter::Kind::Point, e.position = p->position, e.power = p->intensity;
       } else if (const auto* d = std::get_if<scene::DirectionalLight>(&light)) {
-        e.kind = LightEmitter::Kind::Directional, e.towards = glm::normalize(d->towardLight), e.power = d->irradiance;
+        e.kind = LightEmitter::Kind::Directional, e.towards = glm::normalize(d->towardLight),
+        e.power = d->irradiance;
       } else {
         const auto& env = std::get<scene::EnvironmentLight>(light);
         if (settings.environment == EnvironmentStrategy::Escape) {
@@ -71,16 +74,20 @@ class VolumePathTracer {
   }
   double guideRadius() const { return mGuideRadius; }
 
-  /// One estimate of the radiance arriving at `origin` from `direction` (origin outside every body).
-  glm::dvec3 sample(const glm::dvec3& origin, const glm::dvec3& direction, util::Rng& rng, PathTracerStats& st) const {
+  /// One estimate of the radiance arriving at `origin` from `direction` (origin outside every
+  /// body).
+  glm::dvec3 sample(const glm::dvec3& origin, const glm::dvec3& direction, util::Rng& rng,
+                    PathTracerStats& st) const {
     constexpr double kInf = std::numeric_limits<double>::infinity();
     const PathTracerSettings& s = mSettings;
     ++st.cameraSamples;
     const int hero = std::min(2, int(3 * rng.uniform()));
     HeroChannelWeight w;
     glm::dvec3 radiance(0), pos = origin, dir = direction;
-    // A distant camera's rays start near the scene: Embree's float hit distances scale with the origin's.
-    if (glm::length(pos - mCentre) > 2 * mRadius) pos += std::max(0.0, glm::dot(mCentre - pos, dir) - 2 * mRadius) * dir;
+    // A distant camera's rays start near the scene: Embree's float hit distances scale with the
+    // origin's.
+    if (glm::length(pos - mCentre) > 2 * mRadius)
+      pos += std::max(0.0, glm::dot(mCentre - pos, dir) - 2 * mRadius) * dir;
     std::uint32_t medium = 0;
     int scatters = 0;
     bool straightEdge = false, specularSinceScatter = false, firstSurface = true;
@@ -97,14 +104,16 @@ class VolumePathTracer {
           ++st.leakedPaths;
           break;
         }
-        if (!targets.empty()) radiance += joinAlongSegment(pos, dir, hit->t, medium, w, scatters + 1, targets, rng, st);
+        if (!targets.empty())
+          radiance += joinAlongSegment(pos, dir, hit->t, medium, w, scatters + 1, targets, rng, st);
         double t = 0;
         if (sampleFlight(m, pos, dir, hit->t, hero, rng, w, t, st.medium)) {
           pos += t * dir;
           ++scatters, ++st.scatterEvents;
           if (scatters > 1 && !specularSinceScatter) straightEdge = true;
           specularSinceScatter = false;
-          if (!mNextEvent.empty() && orderCounts(s.orders, scatters)) radiance += nextEventEstimate(pos, dir, medium, w, rng, st);
+          if (!mNextEvent.empty() && orderCounts(s.orders, scatters))
+            radiance += nextEventEstimate(pos, dir, medium, w, rng, st);
           if (!survivesRoulette(w, scatters, rng)) break;
           dir = scatterHG(dir, m.g, rng);
           continue;
@@ -117,8 +126,8 @@ class VolumePathTracer {
       const glm::dvec3 point = surfacePoint(mScene, *hit);
       const InterfaceSides sides = interfaceSides(mScene, hit->triangle, dir);
       if (sides.from != medium) ++st.mediumMismatches;
-      const InterfaceCrossing c =
-          crossInterface(mScene, point, dir, sides, s.rayEpsilon, rng, true, firstSurface && s.subsurfaceOnly);
+      const InterfaceCrossing c = crossInterface(mScene, point, dir, sides, s.rayEpsilon, rng, true,
+                                                 firstSurface && s.subsurfaceOnly);
       if (firstSurface) traceLightSubpaths(point, hero, rng, targets, st);
       firstSurface = false;
       if (c.weight <= 0) break;
@@ -136,15 +145,17 @@ class VolumePathTracer {
  private:
   double autoGuideRadius() const {
     // 1 / sigma_tr of the first medium, averaged over channels, between one and ten transport mean
-    // free paths: without absorption 1/sigma_tr is infinite, and aiming light entries over the whole
-    // object left a 100 m spectralon sphere black (the camera's walk ends within a few mean free
-    // paths of its entry). The disc's pdf is a mixture with a uniform part: any scale is unbiased.
+    // free paths: without absorption 1/sigma_tr is infinite, and aiming light entries over the
+    // whole object left a 100 m spectralon sphere black (the camera's walk ends within a few mean
+    // free paths of its entry). The disc's pdf is a mixture with a uniform part: any scale is
+    // unbiased.
     for (std::size_t i = 1; i < mScene.media.size(); ++i) {
       const Medium& m = mScene.media[i];
       if (m.vacuum()) continue;
       const glm::dvec3 sigmaTPrime = m.sigmaA + (1 - m.g) * m.sigmaS;
       const glm::dvec3 sigmaTr = glm::sqrt(3.0 * m.sigmaA * sigmaTPrime);
-      const double meanTr = (sigmaTr.x + sigmaTr.y + sigmaTr.z) / 3, meanT = (sigmaTPrime.x + sigmaTPrime.y + sigmaTPrime.z) / 3;
+      const double meanTr = (sigmaTr.x + sigmaTr.y + sigmaTr.z) / 3,
+                   meanT = (sigmaTPrime.x + sigmaTPrime.y + sigmaTPrime.z) / 3;
       const double meanFreePath = meanT > 0 ? 1 / meanT : mRadius;
       const double length =
           std::clamp(meanTr > 0 ? 1 / meanTr : mRadius, meanFreePath, 10 * meanFreePath);
@@ -153,14 +164,16 @@ class VolumePathTracer {
     return mRadius;
   }
 
-  void traceLightSubpaths(const glm::dvec3& entry, int hero, util::Rng& rng, std::vector<LightVertex>& targets,
-                          PathTracerStats& st) const {
+  void traceLightSubpaths(const glm::dvec3& entry, int hero, util::Rng& rng,
+                          std::vector<LightVertex>& targets, PathTracerStats& st) const {
     const std::size_t first = targets.size();
     for (const LightEmitter& e : mJoined)
       for (int i = 0; i < mSettings.lightSubpaths; ++i)
-        traceLightSubpath(mScene, mCaster, sampleEmission(e, mCentre, mRadius, entry, mGuideRadius, rng), hero, mSettings,
-                          rng, targets, st);
-    for (std::size_t i = first; i < targets.size(); ++i) targets[i].weight.scale(glm::dvec3(1.0 / mSettings.lightSubpaths));
+        traceLightSubpath(mScene, mCaster,
+                          sampleEmission(e, mCentre, mRadius, entry, mGuideRadius, rng), hero,
+                          mSettings, rng, targets, st);
+    for (std::size_t i = first; i < targets.size(); ++i)
+      targets[i].weight.scale(glm::dvec3(1.0 / mSettings.lightSubpaths));
   }
 
   bool survivesRoulette(HeroChannelWeight& w, int scatters, util::Rng& rng) const {
@@ -173,15 +186,17 @@ class VolumePathTracer {
     return true;
   }
 
-  /// Transmittance from x along `dir` over `length` through null interfaces only (0 at a specular one),
-  /// ending in `endMedium` when given.
-  glm::dvec3 segmentTransmittance(glm::dvec3 x, std::uint32_t medium, const glm::dvec3& dir, double length,
-                                  std::optional<std::uint32_t> endMedium, util::Rng& rng, PathTracerStats& st) const {
+  /// Transmittance from x along `dir` over `length` through null interfaces only (0 at a specular
+  /// one), ending in `endMedium` when given.
+  glm::dvec3 segmentTransmittance(glm::dvec3 x, std::uint32_t medium, const glm::dvec3& dir,
+                                  double length, std::optional<std::uint32_t> endMedium,
+                                  util::Rng& rng, PathTracerStats& st) const {
     glm::dvec3 tr(1);
     for (int crossings = 0; crossings < 64; ++crossings) {
       const auto hit = mCaster.intersect(x, dir, 0, length);
       const double seg = hit ? hit->t : length;
-      if (!mScene.media[medium].vacuum()) tr *= transmittance(mScene.media[medium], x, dir, seg, rng, st.medium);
+      if (!mScene.media[medium].vacuum())
+        tr *= transmittance(mScene.media[medium], x, dir, seg, rng, st.medium);
       if (!hit) return !endMedium || *endMedium == medium ? tr : glm::dvec3(0);
       if (maxComponent(tr) <= 0) return tr;
       const InterfaceSides sides = interfaceSides(mScene, hit->triangle, dir);
@@ -194,7 +209,8 @@ class VolumePathTracer {
   }
 
   glm::dvec3 nextEventEstimate(const glm::dvec3& x, const glm::dvec3& dirIn, std::uint32_t medium,
-                               const HeroChannelWeight& w, util::Rng& rng, PathTracerStats& st) const {
+                               const HeroChannelWeight& w, util::Rng& rng,
+                               PathTracerStats& st) const {
     glm::dvec3 sum(0);
     const double g = mScene.media[medium].g;
     for (const LightEmitter& e : mNextEvent) {
@@ -206,18 +222,20 @@ class VolumePathTracer {
         toLight = v / distance;
         irradiance = e.power / (distance * distance);
       }
-      const glm::dvec3 tr = segmentTransmittance(x, medium, toLight, distance, std::nullopt, rng, st);
+      const glm::dvec3 tr =
+          segmentTransmittance(x, medium, toLight, distance, std::nullopt, rng, st);
       // Light travels along -toLight, then towards the camera along -dirIn.
       sum += w.value() * irradiance * tr * optics::phaseHG(glm::dot(toLight, dirIn), g);
     }
     return sum;
   }
 
-  /// Joins every light vertex to the camera segment (pos, dir, [0, tMax]) at a point sampled with pdf
-  /// proportional to 1/d^2 from the light vertex (equiangular sampling).
-  glm::dvec3 joinAlongSegment(const glm::dvec3& pos, const glm::dvec3& dir, double tMax, std::uint32_t medium,
-                              const HeroChannelWeight& w, int cameraOrder, const std::vector<LightVertex>& targets,
-                              util::Rng& rng, PathTracerStats& st) const {
+  /// Joins every light vertex to the camera segment (pos, dir, [0, tMax]) at a point sampled with
+  /// pdf proportional to 1/d^2 from the light vertex (equiangular sampling).
+  glm::dvec3 joinAlongSegment(const glm::dvec3& pos, const glm::dvec3& dir, double tMax,
+                              std::uint32_t medium, const HeroChannelWeight& w, int cameraOrder,
+                              const std::vector<LightVertex>& targets, util::Rng& rng,
+                              PathTracerStats& st) const {
     const Medium& m = mScene.media[medium];
     glm::dvec3 sum(0);
     for (const LightVertex& z : targets) {
@@ -257,16 +275,18 @@ class VolumePathTracer {
 };
 
 struct PathTracedImage {
-  image::Image image;          ///< mean radiance; alpha 1 where the pixel's centre ray meets the scene
+  image::Image image;  ///< mean radiance; alpha 1 where the pixel's centre ray meets the scene
   image::Image standardError;  ///< per-pixel standard error of the mean, per channel
   PathTracerStats stats;
 };
 
-/// Renders with `samplesPerPixel` estimates per pixel along its centre ray (the pixel footprint of the
-/// dipole references, so images compare pixel by pixel). Deterministic for a fixed seed: each pixel has
-/// its own generator, whatever the thread count.
-inline PathTracedImage renderPathTraced(const VolumePathTracer& tracer, const scene::RayCaster& caster,
-                                        const scene::PinholeCamera& camera, const PathTracerSettings& s,
+/// Renders with `samplesPerPixel` estimates per pixel along its centre ray (the pixel footprint of
+/// the dipole references, so images compare pixel by pixel). Deterministic for a fixed seed: each
+/// pixel has its own generator, whatever the thread count.
+inline PathTracedImage renderPathTraced(const VolumePathTracer& tracer,
+                                        const scene::RayCaster& caster,
+                                        const scene::PinholeCamera& camera,
+                                        const PathTracerSettings& s,
                                         const util::ParallelFor& parallelFor = util::serialFor,
                                         const util::Progress& progress = {}) {
   PathTracedImage out;
@@ -280,7 +300,9 @@ inline PathTracedImage renderPathTraced(const VolumePathTracer& tracer, const sc
     for (std::size_t row = begin; row < end; ++row) {
       for (int col = 0; col < camera.width; ++col) {
         const scene::Ray ray = camera.primaryRay(col, double(row));
-        if (!caster.intersect(ray.origin, ray.direction, 0, std::numeric_limits<double>::infinity())) continue;
+        if (!caster.intersect(ray.origin, ray.direction, 0,
+                              std::numeric_limits<double>::infinity()))
+          continue;
         const std::size_t pixel = row * std::size_t(camera.width) + std::size_t(col);
         util::Rng rng(s.seed * 1000003ULL + pixel);
         glm::dvec3 sum(0), sumSq(0);
@@ -289,9 +311,11 @@ inline PathTracedImage renderPathTraced(const VolumePathTracer& tracer, const sc
           sum += l, sumSq += l * l;
         }
         const glm::dvec3 mean = sum / double(spp);
-        const glm::dvec3 variance = glm::max(glm::dvec3(0), sumSq / double(spp) - mean * mean) * (spp > 1 ? double(spp) / (spp - 1) : 0.0);
+        const glm::dvec3 variance = glm::max(glm::dvec3(0), sumSq / double(spp) - mean * mean) *
+                                    (spp > 1 ? double(spp) / (spp - 1) : 0.0);
         out.image.pixels[pixel] = glm::vec4(glm::vec3(mean), 1.0f);
-        out.standardError.pixels[pixel] = glm::vec4(glm::vec3(glm::sqrt(variance / double(spp))), 1.0f);
+        out.standardError.pixels[pixel] =
+            glm::vec4(glm::vec3(glm::sqrt(variance / double(spp))), 1.0f);
       }
       if (progress) progress(double(++rowsDone) / camera.height);
     }
