@@ -1,6 +1,7 @@
 #include "vtk_volume.hpp"
 
 #include "quiet_vtk.hpp"
+#include "voxel_bound.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -25,6 +26,9 @@ bool endsWith(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
+constexpr const char* kResampleFix =
+    "resample the volume (vtkImageResample, or ParaView's Resample To Image)";
+
 /// Voxels named by a reader's header, before the data is read: an input-sized allocation is bounded
 /// (scene::kMaxVoxels) from the extent the file declares, not from what VTK has already allocated.
 void checkDeclaredExtent(vtkAlgorithm& reader, const std::string& path) {
@@ -38,11 +42,7 @@ void checkDeclaredExtent(vtkAlgorithm& reader, const std::string& path) {
   for (int a = 0; a < 3; ++a) dims[a] = double(extent[2 * a + 1]) - double(extent[2 * a]) + 1;
   if (!(dims[0] > 0 && dims[1] > 0 && dims[2] > 0))
     throw InputError(path + ": the header's extent is empty; check the file in ParaView");
-  if (dims[0] * dims[1] * dims[2] > scene::kMaxVoxels)
-    throw InputError(path + ": the header declares " + std::to_string(long(dims[0])) + " x " +
-                     std::to_string(long(dims[1])) + " x " + std::to_string(long(dims[2])) +
-                     " voxels, more than lucent reads (5e8, 2 GB); resample the volume "
-                     "(vtkImageResample, or ParaView's Resample To Image)");
+  checkVoxelCount(path + ": the header declares ", dims, "reads", kResampleFix);
 }
 }  // namespace
 
@@ -76,12 +76,9 @@ scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arr
   if (!image || !(dims[0] > 0 && dims[1] > 0 && dims[2] > 0))
     throw InputError(path +
                      ": the volume is empty or could not be read; check the file in ParaView");
-  const double voxels = double(dims[0]) * double(dims[1]) * double(dims[2]);
-  if (voxels > scene::kMaxVoxels)  // the data may still disagree with the header
-    throw InputError(path + ": " + std::to_string(dims[0]) + " x " + std::to_string(dims[1]) +
-                     " x " + std::to_string(dims[2]) +
-                     " voxels, more than lucent reads (5e8, 2 GB); resample the volume "
-                     "(vtkImageResample, or ParaView's Resample To Image)");
+  const double read[3] = {double(dims[0]), double(dims[1]), double(dims[2])};
+  checkVoxelCount(path + ": ", read, "reads", kResampleFix);  // as read, besides as declared
+  const double voxels = read[0] * read[1] * read[2];
   vtkPointData* pd = image->GetPointData();
   vtkDataArray* array = arrayName.empty() ? pd->GetScalars() : pd->GetArray(arrayName.c_str());
   if (!array && arrayName.empty() && pd->GetNumberOfArrays() > 0) array = pd->GetArray(0);

@@ -8,6 +8,7 @@
 #include <mutex>
 
 #include "../io/atomic_file.hpp"
+#include "../io/voxel_bound.hpp"
 #include "../util/error.hpp"
 #include "vdb_file_check.hpp"
 
@@ -44,12 +45,6 @@ openvdb::GridBase::Ptr readGrid(openvdb::io::File& file, const std::string& name
   }
 }
 
-/// The active box's voxel count, in doubles (a hostile box can span the whole int range).
-double voxelCount(const openvdb::CoordBBox& box) {
-  double n = 1;
-  for (int a = 0; a < 3; ++a) n *= double(box.max()[a]) - double(box.min()[a]) + 1;
-  return n;
-}
 }  // namespace
 
 std::vector<std::string> gridNames(const std::string& path) {
@@ -94,12 +89,10 @@ scene::VoxelGrid readFloatGrid(const std::string& path, const std::string& gridN
   if (box.empty()) return out;
   // Densifying is an input-sized allocation: bounded before it is made (two far-apart active voxels
   // make a huge box from a tiny file).
-  if (voxelCount(box) > scene::kMaxVoxels)
-    throw InputError("grid in '" + path + "': its active voxels span " +
-                     std::to_string(long(double(box.max().x()) - box.min().x() + 1)) + " x " +
-                     std::to_string(long(double(box.max().y()) - box.min().y() + 1)) + " x " +
-                     std::to_string(long(double(box.max().z()) - box.min().z() + 1)) +
-                     " voxels, more than lucent densifies (5e8, 2 GB); resample or crop the grid");
+  double span[3];
+  for (int a = 0; a < 3; ++a) span[a] = double(box.max()[a]) - double(box.min()[a]) + 1;
+  io::checkVoxelCount("grid in '" + path + "': its active voxels span ", span, "densifies",
+                      "resample or crop the grid");
   const openvdb::Coord lo = box.min(), dim = box.dim();
   out.dims = {dim.x(), dim.y(), dim.z()};
   out.voxelSize = vs.x();
