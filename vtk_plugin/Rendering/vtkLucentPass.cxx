@@ -140,6 +140,9 @@ struct vtkLucentPass::Internals {
   vtkOpenGLQuadHelper* compositeQuad = nullptr;
   std::string lightDepthVs, lightDepthFs, atlasVs, atlasFs, shadeVs, shadeFs;
   std::map<vtkActor*, vtkSmartPointer<vtkLucentSurface>> surfaces;
+  /// Per surface, the build, material and knobs its range was last checked for: the check copies
+  /// the mesh, so it runs when one of them changes, not every frame.
+  std::map<const vtkLucentSurface*, std::string> rangeChecked;
   int frameWidth = 0, frameHeight = 0;
   std::vector<float> frameRadiance, framePosition, frameNormal;
 
@@ -213,6 +216,12 @@ void vtkLucentPass::WarnOutsideRange(const vtkLucentSurface& surface) {
   // tsis's stated range, with the pass's knobs. The CLI and the filter refuse outside it; an
   // interactive view keeps drawing (finite, but not what tsis promises) and says so once.
   static const lucent::technique::Technique tsis = lucent::technique::tsisTechnique();
+  const std::string checkedFor = std::to_string(surface.GetBuildCount()) + " " + this->Material +
+                                 " " + std::to_string(this->Samples) + " " +
+                                 std::to_string(this->AtlasResolution);
+  std::string& lastChecked = this->Impl->rangeChecked[&surface];
+  if (lastChecked == checkedFor) return;
+  lastChecked = checkedFor;
   const auto material = lucent::optics::findMaterial(this->Material);
   if (!material) return;
   lucent::technique::SceneDescription scene;
@@ -529,7 +538,10 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
   }
   // Actors gone from the renderer give their buffers back.
   for (auto& [actor, surface] : I.surfaces)
-    if (!seen.count(actor)) surface->ReleaseGraphicsResources(window);
+    if (!seen.count(actor)) {
+      surface->ReleaseGraphicsResources(window);
+      I.rangeChecked.erase(surface.Get());
+    }
   I.surfaces = std::move(seen);
   return this->TranslucentActorCount > 0;
 }
@@ -642,6 +654,7 @@ void vtkLucentPass::ReleaseGraphicsResources(vtkWindow* w) {
   I.compositeQuad = nullptr;
   for (auto& entry : I.surfaces) entry.second->ReleaseGraphicsResources(w);
   I.surfaces.clear();
+  I.rangeChecked.clear();
   for (auto* fbo : {I.sceneFbo.Get(), I.translucentFbo.Get(), I.lightFbo.Get(), I.atlasFbo.Get(),
                     I.samplesFbo.Get()})
     if (fbo) fbo->ReleaseGraphicsResources(w);

@@ -111,6 +111,7 @@ bool vtkLucentSurface::Update(vtkActor* actor, double sizeMm, int atlasResolutio
   std::copy(elements, elements + 16, this->BuiltMatrix);
   this->BuiltSizeMm = sizeMm;
   this->BuiltResolution = atlasResolution;
+  ++this->BuildCount;
   return true;
 }
 

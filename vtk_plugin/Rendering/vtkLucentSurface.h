@@ -43,6 +43,8 @@ class vtkLucentSurface : public vtkObject {
   double GetRadius() const { return this->Radius; }
   /// The surface in millimetres, centred (what the atlas is laid out on; tsis's range reads it).
   const lucent::scene::TriangleMesh& GetMillimetreMesh() const { return this->MillimetreMesh; }
+  /// Grows by one each time Update rebuilds the surface (what depends on the mesh can cache by it).
+  unsigned long GetBuildCount() const { return this->BuildCount; }
 
  protected:
   vtkLucentSurface();
@@ -64,6 +66,7 @@ class vtkLucentSurface : public vtkObject {
   int CornerCount = 0;
   double MillimetresPerUnit = 1, Centre[3] = {0, 0, 0}, Radius = 1;
   lucent::scene::TriangleMesh MillimetreMesh;
+  unsigned long BuildCount = 0;
 };
 
 #endif
