@@ -30,6 +30,17 @@ scene::VoxelGrid ballDensity() {
       }
   return g;
 }
+
+/// The InputError `read` throws, or "no error".
+template <class Read>
+std::string message(const Read& read) {
+  try {
+    read();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
 }  // namespace
 
 TEST_CASE("A density written to OpenVDB reads back voxel for voxel, in millimetres") {
@@ -52,14 +63,6 @@ TEST_CASE("A density written to OpenVDB reads back voxel for voxel, in millimetr
 TEST_CASE("OpenVDB input errors name the file, the problem and what is there") {
   test::TempDir dir;
   vdb::writeFloatGrid(dir / "ball.vdb", ballDensity(), "density");
-  auto message = [](auto&& f) {
-    try {
-      f();
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
   CHECK(message([&] { vdb::readFloatGrid(dir / "missing.vdb"); }).find("no such file") !=
         std::string::npos);
   CHECK(message([&] {
@@ -85,14 +88,6 @@ void writeSparse(const std::string& path,
 
 TEST_CASE("A sparse OpenVDB grid is not densified past the voxel bound, nor read with NaN") {
   test::TempDir dir;
-  auto message = [](auto&& f) {
-    try {
-      f();
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
   // Two active voxels 3000 apart: a 2.7e10-voxel box from a file of a few kB.
   writeSparse(dir / "far.vdb", {{openvdb::Coord(0, 0, 0), 1.0f}, {openvdb::Coord(2999), 1.0f}});
   const std::string far = message([&] { vdb::readFloatGrid(dir / "far.vdb"); });
