@@ -15,6 +15,7 @@
 #include <vector>
 
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkCleanPolyData.h>
 #include <vtkCompositeDataIterator.h>
 #include <vtkCompositeDataSet.h>
@@ -81,19 +82,27 @@ inline bool convexFan(vtkPolyData* poly, vtkIdType n, const vtkIdType* ids, vtkC
   return true;
 }
 
+/// The most corners a polygon is fanned with (the apex search is quadratic in them); larger ones go
+/// to VTK's ear cut.
+constexpr vtkIdType kMaxFannedCorners = 1024;
+
 /// The polygons with every convex one fanned (convexFan): VTK's ear cut drops thin quads and
 /// polygons with nearly coincident corners (a sliver of 1e-7 of the object made a closed box
 /// report holes); a fan cannot fail. `expected` counts the triangles the polygons should give.
 inline vtkSmartPointer<vtkPolyData> convexPolygonsFanned(vtkPolyData* poly, std::size_t& expected) {
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->ShallowCopy(poly);
+  // Its cell data describes the unsplit cells: the triangulation would read tuples past its end.
+  // Nothing downstream reads cell data.
+  out->GetCellData()->Initialize();
   vtkNew<vtkCellArray> polys;
   vtkCellArray* cells = poly->GetPolys();
   vtkIdType n = 0;
   const vtkIdType* ids = nullptr;
   for (cells->InitTraversal(); cells->GetNextCell(n, ids);) {
     if (n >= 3) expected += std::size_t(n - 2);
-    if (n < 4 || n > 1024 || !convexFan(poly, n, ids, polys)) polys->InsertNextCell(n, ids);
+    if (n < 4 || n > kMaxFannedCorners || !convexFan(poly, n, ids, polys))
+      polys->InsertNextCell(n, ids);
   }
   out->SetPolys(polys);
   return out;
