@@ -1,15 +1,17 @@
 #pragma once
 /// @file translucent_shadow_map.hpp
 /// @brief The local term of the hybrid method (texture-space-importance-sampling Sec. 4.2, after
-/// Dachsbacher & Stamminger 2003): the surface as the light sees it, stored on a plane normal to the
-/// light (first hit and the power per unit plane area rho = E / |n_geom . axis|), filtered around the
-/// projection of x_o with the ring filter (ring_filter.hpp) using 3-D distances, so thin parts glow.
+/// Dachsbacher & Stamminger 2003): the surface as the light sees it, stored on a plane normal to
+/// the light (first hit and the power per unit plane area rho = E / |n_geom . axis|), filtered
+/// around the projection of x_o with the ring filter (ring_filter.hpp) using 3-D distances, so thin
+/// parts glow.
 ///
-/// The map is orthographic along the light's direction (for a point light, the direction from the light
-/// to the object's centre; E itself is the point light's exact irradiance with shadows). Limits, stated:
-/// one depth layer per light (surface the map cannot see adds nothing locally; the global term sees it),
-/// point lights close to the object are approximated by that one axis, and environment lights have no
-/// light view (use tsis there). Grazing texels cap 1/|n . axis| at kMaxObliquity.
+/// The map is orthographic along the light's direction (for a point light, the direction from the
+/// light to the object's centre; E itself is the point light's exact irradiance with shadows).
+/// Limits, stated: one depth layer per light (surface the map cannot see adds nothing locally; the
+/// global term sees it), point lights close to the object are approximated by that one axis, and
+/// environment lights have no light view (use tsis there). Grazing texels cap 1/|n . axis| at
+/// kMaxObliquity.
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -27,7 +29,8 @@
 
 namespace lucent::atlas {
 
-inline constexpr double kMaxObliquity = 20.0;  ///< cap of 1/|n.axis| (faces within 3 degrees of grazing)
+inline constexpr double kMaxObliquity =
+    20.0;  ///< cap of 1/|n.axis| (faces within 3 degrees of grazing)
 
 class TranslucentShadowMap {
  public:
@@ -37,7 +40,8 @@ class TranslucentShadowMap {
                        const scene::IrradianceSettings& irr, int resolution,
                        const util::ParallelFor& parallelFor = util::serialFor)
       : mResolution(resolution) {
-    if (resolution < 2) throw std::invalid_argument("translucent shadow map resolution must be >= 2");
+    if (resolution < 2)
+      throw std::invalid_argument("translucent shadow map resolution must be >= 2");
     const scene::Bounds bounds = mesh.bounds();
     mCenter = bounds.center();
     const double radius = 0.5 * bounds.diagonal() * 1.001 + 1e-9;
@@ -47,8 +51,9 @@ class TranslucentShadowMap {
     } else if (const auto* dl = std::get_if<scene::DirectionalLight>(&light)) {
       mAxis = -glm::normalize(dl->towardLight);
     } else {
-      throw std::invalid_argument("a translucent shadow map needs a point or directional light; "
-                                  "environment lights have no light view (use --method tsis)");
+      throw std::invalid_argument(
+          "a translucent shadow map needs a point or directional light; "
+          "environment lights have no light view (use --method tsis)");
     }
     util::orthonormalBasis(mAxis, mT, mB);
     mHalfExtent = radius;
@@ -61,16 +66,18 @@ class TranslucentShadowMap {
     parallelFor(std::size_t(resolution), [&](std::size_t begin, std::size_t end) {
       for (std::size_t y = begin; y < end; ++y)
         for (int x = 0; x < resolution; ++x) {
-          const glm::dvec3 q = mCenter + (-radius + (x + 0.5) * mTexel) * mT + (-radius + (double(y) + 0.5) * mTexel) * mB;
+          const glm::dvec3 q = mCenter + (-radius + (x + 0.5) * mTexel) * mT +
+                               (-radius + (double(y) + 0.5) * mTexel) * mB;
           const glm::dvec3 origin = q - 2 * radius * mAxis;
           const auto hit = caster.intersect(origin, mAxis, 0, 4 * radius);
           if (!hit) continue;
           const glm::dvec3 fn = glm::normalize(mesh.areaVector(hit->triangle));
-          const glm::dvec3 n =
-              scene::shadingNormal(mesh, vertexNormals, hit->triangle, glm::dvec3(1 - hit->u - hit->v, hit->u, hit->v));
+          const glm::dvec3 n = scene::shadingNormal(
+              mesh, vertexNormals, hit->triangle, glm::dvec3(1 - hit->u - hit->v, hit->u, hit->v));
           const glm::dvec3 x3 = origin + hit->t * mAxis;
           const glm::dvec3 e = scene::irradianceAt(x3, n, fn, one, caster, irr, y * resolution + x);
-          const double obliquity = std::min(kMaxObliquity, 1.0 / std::max(std::abs(glm::dot(fn, mAxis)), 1e-12));
+          const double obliquity =
+              std::min(kMaxObliquity, 1.0 / std::max(std::abs(glm::dot(fn, mAxis)), 1e-12));
           const std::size_t i = y * resolution + std::size_t(x);
           mPosition[i] = glm::vec3(x3);
           mDensity[i] = glm::vec3(e * obliquity);
@@ -79,37 +86,59 @@ class TranslucentShadowMap {
     });
   }
 
-  /// int rho f(|x - x_o|) dA over the map around x_o's projection, by the ring filter (per channel).
-  /// @param profile callable double -> dvec3, the filtered profile f.
-  template <class Profile>
-  glm::dvec3 filter(const glm::dvec3& xo, const RingFilter& ring, const Profile& profile) const {
+  /// Calls visit(texel, k, share) for each ring-filter tap around x_o's projection that lands on a
+  /// covered texel: k the tap's stratum (0 = the centre), share its part of the stratum (1/C on a
+  /// ring).
+  template <class Visit>
+  void forEachTap(const glm::dvec3& xo, const RingFilter& ring, Visit&& visit) const {
     const glm::dvec3 rel = xo - mCenter;
     const double pu = glm::dot(rel, mT), pv = glm::dot(rel, mB);
-    glm::dvec3 sum(0);
-    auto add = [&](double u, double v, std::size_t k, double share) {
-      const int x = int(std::floor((u + mHalfExtent) / mTexel)), y = int(std::floor((v + mHalfExtent) / mTexel));
+    auto at = [&](double u, double v, std::size_t k, double share) {
+      const int x = int(std::floor((u + mHalfExtent) / mTexel));
+      const int y = int(std::floor((v + mHalfExtent) / mTexel));
       if (x < 0 || y < 0 || x >= mResolution || y >= mResolution) return;
       const std::size_t i = std::size_t(y) * std::size_t(mResolution) + std::size_t(x);
-      if (!mValid[i]) return;
-      const glm::dvec3 f = profile(glm::length(glm::dvec3(mPosition[i]) - xo));
-      for (int c = 0; c < 3; ++c)
-        if (ring.profileAt[k][c] > 0) sum[c] += share * ring.mass[k][c] * double(mDensity[i][c]) * f[c] / ring.profileAt[k][c];
+      if (mValid[i]) visit(i, k, share);
     };
-    add(pu, pv, 0, 1.0);
-    constexpr double kGolden = 2.399963229728653;  // rings turn by the golden angle: no aligned spokes
+    at(pu, pv, 0, 1.0);
+    constexpr double kGolden =
+        2.399963229728653;  // rings turn by the golden angle: no aligned spokes
     for (int k = 1; k <= ring.rings; ++k)
       for (int c = 0; c < ring.perRing; ++c) {
         const double phi = kGolden * k + 2 * optics::kPi * c / ring.perRing;
-        add(pu + ring.radius[std::size_t(k)] * std::cos(phi), pv + ring.radius[std::size_t(k)] * std::sin(phi),
-            std::size_t(k), 1.0 / ring.perRing);
+        at(pu + ring.radius[std::size_t(k)] * std::cos(phi),
+           pv + ring.radius[std::size_t(k)] * std::sin(phi), std::size_t(k), 1.0 / ring.perRing);
       }
+  }
+
+  /// int rho f(|x - x_o|) dA over the map around x_o's projection, by the ring filter (per
+  /// channel).
+  /// @param profile callable double -> dvec3, the filtered profile f.
+  template <class Profile>
+  glm::dvec3 filter(const glm::dvec3& xo, const RingFilter& ring, const Profile& profile) const {
+    glm::dvec3 sum(0);
+    forEachTap(xo, ring, [&](std::size_t i, std::size_t k, double share) {
+      const glm::dvec3 f = profile(glm::length(glm::dvec3(mPosition[i]) - xo));
+      for (int c = 0; c < 3; ++c)
+        if (ring.profileAt[k][c] > 0)
+          sum[c] += share * ring.mass[k][c] * double(mDensity[i][c]) * f[c] / ring.profileAt[k][c];
+    });
     return sum;
   }
 
-  /// The power the map holds (sum of rho times the texel area): what the light puts into the surface it sees.
+  ///@{ A texel: whether the surface covers it, its first hit (mm), rho (power per unit map area).
+  std::size_t texelCount() const { return mValid.size(); }
+  bool covered(std::size_t texel) const { return mValid[texel] != 0; }
+  glm::dvec3 position(std::size_t texel) const { return glm::dvec3(mPosition[texel]); }
+  glm::dvec3 density(std::size_t texel) const { return glm::dvec3(mDensity[texel]); }
+  ///@}
+
+  /// The power the map holds (sum of rho times the texel area): what the light puts into the
+  /// surface it sees.
   glm::dvec3 totalPower() const {
     glm::dvec3 s(0);
-    for (std::size_t i = 0; i < mDensity.size(); ++i) s += glm::dvec3(mDensity[i]) * (mTexel * mTexel);
+    for (std::size_t i = 0; i < mDensity.size(); ++i)
+      s += glm::dvec3(mDensity[i]) * (mTexel * mTexel);
     return s;
   }
   int resolution() const { return mResolution; }

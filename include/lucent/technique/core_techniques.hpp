@@ -4,6 +4,7 @@
 /// one file and one line here; techniques that need a heavy library register from their adapter in
 /// src/.
 #include "dipole_sum.hpp"
+#include "optical_thickness.hpp"
 #include "path_tracing.hpp"
 #include "registry.hpp"
 #include "texture_space.hpp"
@@ -16,6 +17,7 @@ inline void addCoreTechniques(Registry& registry) {
   registry.add(tsisTechnique());
   registry.add(hybridTechnique());
   registry.add(tsmTechnique());
+  registry.add(taulutTechnique());
   registry.add(pathtraceTechnique());
 }
 

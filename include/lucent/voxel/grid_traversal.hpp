@@ -74,16 +74,25 @@ void traverse(const MediaGrid& grid, const glm::dvec3& a, const glm::dvec3& b, V
   }
 }
 
-/// Path length (mm) through each medium 0..media-1 along a -> b; medium 0 (none) included, so the
-/// lengths add up to the part of the segment inside the grid's box.
+/// Adds the path length (mm) through each medium 0..media-1 along a -> b to out[0..media-1],
+/// weighted by the voxels' density (a length at density 1). Allocates nothing: the per-query walk
+/// of on-the-fly marching.
+inline void addPathLengths(const MediaGrid& grid, const glm::dvec3& a, const glm::dvec3& b,
+                           int media, double* out) {
+  const double total = glm::length(b - a);
+  traverse(grid, a, b, [&](const glm::ivec3& v, double t0, double t1) {
+    const std::size_t i = grid.index(v);
+    const std::uint8_t m = grid.medium[i];
+    if (m < media) out[m] += (t1 - t0) * total * grid.densityAt(i);
+  });
+}
+
+/// Path length through each medium 0..media-1 along a -> b (addPathLengths); medium 0 (none)
+/// included, so with no density the lengths add up to the part of the segment inside the grid.
 inline std::vector<double> pathLengths(const MediaGrid& grid, const glm::dvec3& a,
                                        const glm::dvec3& b, int media) {
   std::vector<double> length(std::size_t(std::max(media, 1)), 0.0);
-  const double total = glm::length(b - a);
-  traverse(grid, a, b, [&](const glm::ivec3& v, double t0, double t1) {
-    const std::uint8_t m = grid.at(v);
-    if (m < length.size()) length[m] += (t1 - t0) * total;
-  });
+  addPathLengths(grid, a, b, int(length.size()), length.data());
   return length;
 }
 

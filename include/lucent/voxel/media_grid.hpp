@@ -3,7 +3,8 @@
 /// @brief Which medium fills each voxel of a box-shaped grid: the voxel optical-thickness LUT's
 /// (voxel-optical-thickness-lut Sec. 2.1) discretised object. Voxels are boxes with their own
 /// spacing per axis (scans are anisotropic); 0 is no medium (outside the object, or a cavity), 1..
-/// are media whose coefficients live elsewhere, so a material edit changes no grid.
+/// are media whose coefficients live elsewhere, so a material edit changes no grid. An optional
+/// density per voxel scales its medium's coefficients (a scan; 1 where absent).
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -23,6 +24,7 @@ struct MediaGrid {
   glm::dvec3 origin{0};              ///< the lower corner of voxel (0, 0, 0), mm
   glm::dvec3 spacing{1};             ///< voxel edge per axis, mm
   std::vector<std::uint8_t> medium;  ///< x fastest, then y, then z
+  std::vector<float> density;        ///< empty, or one multiplier per voxel (same order)
 
   MediaGrid() = default;
   MediaGrid(glm::ivec3 size, glm::dvec3 lowerCorner, glm::dvec3 voxelSize,
@@ -44,6 +46,8 @@ struct MediaGrid {
   }
   std::uint8_t at(const glm::ivec3& v) const { return contains(v) ? medium[index(v)] : kNoMedium; }
   void set(const glm::ivec3& v, std::uint8_t m) { medium[index(v)] = m; }
+  /// The coefficient multiplier of an in-grid voxel.
+  double densityAt(std::size_t i) const { return density.empty() ? 1.0 : double(density[i]); }
 
   glm::dvec3 lowerCorner() const { return origin; }
   glm::dvec3 upperCorner() const { return origin + glm::dvec3(dims) * spacing; }

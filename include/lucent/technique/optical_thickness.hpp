@@ -1,0 +1,231 @@
+#pragma once
+/// @file optical_thickness.hpp
+/// @brief The voxel optical-thickness LUT technique ("taulut", voxel-optical-thickness-lut): the
+/// object and its inclusions voxelised into media, the per-medium path lengths between surface
+/// voxels precomputed (or marched, or clustered), and per frame the light views' irradiance and
+/// voxel-number maps filtered by Eq. 1-3 (include/lucent/voxel/tau_lut_radiance.hpp).
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "../voxel/surface_paths.hpp"
+#include "../voxel/surface_voxel_lookup.hpp"
+#include "../voxel/tau_lut_radiance.hpp"
+#include "../voxel/voxelize.hpp"
+#include "texture_space.hpp"
+
+namespace lucent::technique {
+
+namespace detail {
+
+/// The scene as media: the object is medium 1, inclusion i is medium 2 + i (filled after the
+/// object, so it wins), a cavity (the mesh's inward shells) is none; density fields sampled at the
+/// voxel centres.
+inline voxel::MediaGrid mediaGridOf(const SceneDescription& scene, int voxelsAlongLongest) {
+  if (scene.inclusions.size() > 254)
+    throw RequestError("taulut: at most 254 inclusions (the grid stores a byte per voxel)");
+  voxel::MediaGrid grid = voxel::gridAround(scene.mesh, voxelsAlongLongest);
+  voxel::fillInside(grid, scene.mesh, 1);
+  for (std::size_t i = 0; i < scene.inclusions.size(); ++i)
+    voxel::fillInside(grid, scene.inclusions[i].surface, std::uint8_t(2 + i));
+  bool heterogeneous = scene.medium.heterogeneous();
+  for (const auto& inc : scene.inclusions) heterogeneous |= inc.medium.heterogeneous();
+  if (!heterogeneous) return grid;
+  grid.density.assign(grid.voxelCount(), 1.f);
+  for (int z = 0; z < grid.dims.z; ++z)
+    for (int y = 0; y < grid.dims.y; ++y)
+      for (int x = 0; x < grid.dims.x; ++x) {
+        const std::size_t i = grid.index({x, y, z});
+        const std::uint8_t m = grid.medium[i];
+        if (m == voxel::kNoMedium) continue;
+        const Medium& medium = m == 1 ? scene.medium : scene.inclusions[m - 2u].medium;
+        if (!medium.density) continue;
+        const double d = medium.density(grid.centre({x, y, z}));
+        if (!(d >= 0 && std::isfinite(d)))
+          throw RequestError("taulut: the density of " + medium.densityDescription + " is " +
+                             std::to_string(d) +
+                             " at a voxel centre; densities must be finite "
+                             "and >= 0");
+        grid.density[i] = float(d);
+      }
+  return grid;
+}
+
+/// sigma_t = sigma_a + sigma_s' of media 1.. (the object's, then the inclusions'), at frame time.
+inline std::vector<glm::dvec3> extinctionOf(const SceneDescription& scene) {
+  auto sigmaT = [](const optics::Material& m) { return glm::dvec3(m.sigmaA + m.sigmaSPrime); };
+  std::vector<glm::dvec3> out{sigmaT(scene.medium.material)};
+  for (const auto& inc : scene.inclusions) out.push_back(sigmaT(inc.medium.material));
+  return out;
+}
+
+inline voxel::SurfacePathOptions surfacePathOptions(const KnobValues& knobs) {
+  voxel::SurfacePathOptions o;
+  o.storage =
+      knobs.pick<voxel::Storage>("storage", {{"lut", voxel::Storage::Lut},
+                                             {"march", voxel::Storage::March},
+                                             {"hierarchical", voxel::Storage::Hierarchical}});
+  o.precision = knobs.pick<voxel::Precision>(
+      "precision", {{"fp16", voxel::Precision::Half}, {"fp32", voxel::Precision::Single}});
+  o.clusterEdge = int(knobs.integer("cluster"));
+  o.maxTableBytes = std::size_t(knobs.integer("max-table-mb")) << 20;
+  return o;
+}
+
+/// The light-view map must resolve Eq. 3's kernel e^{-sigma_t r}: a texel of at most
+/// validity::kMaxStepInRdWidths mean free paths of the object's densest channel, or every tap
+/// falls in x_out's own texel, whose first hit lies up to a texel away, and the image goes dark.
+inline std::string tauMapInRange(const SceneDescription& scene, const KnobValues& knobs) {
+  const double texel = mapTexel(scene, knobs);
+  const double mfp = opticalScales(scene.medium.material).shortestMeanFreePath;
+  if (!(texel > validity::kMaxStepInRdWidths * mfp)) return "";
+  return "the light-view map texel is " + lengthText(texel) + ", more than " +
+         std::to_string(int(validity::kMaxStepInRdWidths)) + " mean free paths (" +
+         lengthText(mfp) +
+         ", the width of e^{-sigma_t r}): the filter's taps fall in one texel "
+         "and the image comes out too dark; raise map";
+}
+
+class TauLut final : public Prepared {
+ public:
+  TauLut(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats)
+      : mKnobs(knobs),
+        mGrid(stats.timePrepare("voxelize",
+                                [&] { return mediaGridOf(scene, int(knobs.integer("voxels"))); })),
+        mSurface(stats.timePrepare("surface_voxels", [&] { return voxel::surfaceVoxels(mGrid); })),
+        mPaths(buildPaths(scene, knobs, stats)),
+        mLookup(mPaths.grid(), mSurface) {
+    stats.figures["grid_voxels"] = double(mGrid.voxelCount());
+    stats.figures["surface_voxels"] = double(mSurface.count());
+    stats.figures["table_endpoints"] = double(mPaths.tableEndpoints());
+    stats.figures["table_bytes"] = double(mPaths.tableBytes());
+    stats.bytes = double(mPaths.tableBytes() + mGrid.voxelCount() * (1 + 4));
+  }
+
+  FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
+                    Statistics& stats) override {
+    std::vector<atlas::TranslucentShadowMap> maps = lightViews(scene, stats);
+    const std::vector<glm::dvec3> sigmaT = extinctionOf(scene);
+    const voxel::TauLutRadiance model = stats.timeFrame("voxel_number_maps", [&] {
+      return voxel::TauLutRadiance(std::move(maps), mPaths, mLookup, sigmaT, taps(),
+                                   scene.mesh.bounds().diagonal());
+    });
+    stats.samples = double(taps());
+    stats.sampleUnit = "filter taps";
+    stats.figures["filter_radius_mm"] = model.filter().outerRadius;
+    FrameResult out;
+    out.radiosity = evaluate(model, scene, request, mKnobs, stats);
+    stats.figures["far_points"] = double(mLookup.farPoints());
+    if (mLookup.farPoints() > 0)
+      stats.warnings.push_back(
+          "taulut: " + std::to_string(mLookup.farPoints()) + " points lie more than " +
+          std::to_string(voxel::SurfaceVoxelLookup::kSearchRadius) +
+          " voxels from every surface voxel (features thinner than a voxel); raise voxels");
+    return out;
+  }
+
+ private:
+  int taps() const { return 1 + voxel::kTapsPerRing * int(mKnobs.integer("rings")); }
+
+  voxel::SurfacePaths buildPaths(const SceneDescription& scene, const KnobValues& knobs,
+                                 Statistics& stats) const {
+    if (mSurface.count() == 0)
+      throw RequestError("taulut: no voxel centre lies inside mesh " + scene.meshName + " at " +
+                         std::to_string(knobs.integer("voxels")) +
+                         " voxels along its longest side; raise voxels");
+    return stats.timePrepare("optical_thickness", [&] {
+      try {
+        return voxel::SurfacePaths(mGrid, mSurface, 1 + int(scene.inclusions.size()),
+                                   surfacePathOptions(knobs), scene.parallelFor,
+                                   scene.stage("optical-thickness table"));
+      } catch (const voxel::TableTooLarge& e) {
+        throw RequestError("taulut: " + std::string(e.what()) +
+                           "; use storage=hierarchical or storage=march, lower voxels, or raise "
+                           "max-table-mb");
+      }
+    });
+  }
+
+  /// The irradiance map of Eq. 2 per light (with its first hits, from which the voxel-number map
+  /// follows).
+  std::vector<atlas::TranslucentShadowMap> lightViews(const SceneDescription& scene,
+                                                      Statistics& stats) const {
+    return stats.timeFrame("irradiance_maps", [&] {
+      scene::IrradianceSettings irr;
+      irr.eta = scene.medium.material.eta;
+      irr.rayEpsilon = scene.rayEpsilon();
+      std::vector<atlas::TranslucentShadowMap> maps;
+      for (const auto& light : scene.lights)
+        maps.emplace_back(light, scene.mesh, scene.vertexNormals, *scene.caster, irr,
+                          int(mKnobs.integer("map")), scene.parallelFor);
+      return maps;
+    });
+  }
+
+  KnobValues mKnobs;
+  voxel::MediaGrid mGrid;
+  voxel::SurfaceVoxels mSurface;
+  voxel::SurfacePaths mPaths;
+  voxel::SurfaceVoxelLookup mLookup;
+};
+
+}  // namespace detail
+
+inline Technique taulutTechnique() {
+  Technique t;
+  t.name = "taulut";
+  t.summary =
+      "voxel optical-thickness LUT: Rd = e^{-tau} between surface voxels through inner media and "
+      "cavities, filtered over the light's view";
+  t.paper =
+      "Mochida, Okamoto, Kubo, Morishima 2016, Real-time Rendering of Heterogeneous Translucent "
+      "Objects using Voxel Number Map (Eurographics posters), Eq. 1-4; the 21-tap filter of "
+      "Dachsbacher, Stamminger 2003, Translucent Shadow Maps";
+  t.knobs = {
+      KnobSpec::integer("voxels", 25, 2, 1024, "voxels along the object's longest side (cubic)",
+                        Phase::Prepare),
+      KnobSpec::choice("storage", {"lut", "march", "hierarchical"},
+                       "path lengths between surface voxels: the full table, walked per query, or "
+                       "a table between clusters with exact walks between neighbours",
+                       Phase::Prepare),
+      KnobSpec::choice("precision", {"fp16", "fp32"},
+                       "table entries: fp16 (2^-11 relative) or fp32", Phase::Prepare),
+      KnobSpec::integer("cluster", 4, 2, 64, "hierarchical: voxels per cluster edge",
+                        Phase::Prepare),
+      KnobSpec::integer("max-table-mb", 1024, 1, 1 << 20,
+                        "refuse a table larger than this before building it", Phase::Prepare,
+                        "MiB"),
+      KnobSpec::integer("rings", 4, 1, 1000,
+                        "rings of 5 taps around the centre tap (4: the 21 taps of translucent "
+                        "shadow maps)"),
+      KnobSpec::integer("map", 512, 8, 8192,
+                        "irradiance and voxel-number map resolution (texels per side)"),
+      KnobSpec::choice("eval", {"pixel", "vertex"},
+                       "where Eq. 1 is summed: pixel (every shaded point) or vertex "
+                       "(interpolated B)")};
+  t.capabilities.environmentLights = false;
+  t.capabilities.heterogeneousMedia = true;
+  t.capabilities.inclusions = true;
+  t.capabilities.singleScattering = true;
+  t.capabilities.multipleScattering = false;
+  t.capabilities.precomputeScaling =
+      "lut: N_s^2 / 2 walks of O(voxels) (N_s surface voxels); hierarchical: about "
+      "(N_s / cluster^2)^2 / 2; march: none";
+  t.capabilities.frameScaling = "O(lights x map^2 + points x taps), x O(voxels) for march";
+  t.defaultSweep = {{"voxels", {"16", "25", "40", "60"}}};
+  t.quickKnobs = {{"voxels", "12"}, {"map", "128"}};
+  t.model = "transmittance";
+  t.validRange =
+      "any size and albedo (an empirical transmittance model: it ignores in-scattering and "
+      "albedo; docs/accuracy/taulut.md measures where it holds), with features of at least a "
+      "voxel and a light-view map texel (bounding-box diagonal / map) of at most 2 mean free "
+      "paths";
+  t.validity = detail::tauMapInRange;
+  t.prepare = [](const SceneDescription& scene, const KnobValues& knobs, Statistics& stats) {
+    return std::make_unique<detail::TauLut>(scene, knobs, stats);
+  };
+  return t;
+}
+
+}  // namespace lucent::technique
