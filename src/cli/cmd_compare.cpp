@@ -23,7 +23,9 @@ int runCompare(int argc, char** argv) {
                  "over all pixels, both\n"
                  "images mapped with the reference's L_avg; relative_rms = "
                  "sqrt(sum|a-b|^2/sum|b|^2) of linear\n"
-                 "radiance over covered pixels; max_abs_error = largest per-channel |a-b|. PNG "
+                 "radiance over covered pixels; scaled_relative_rms = the same after each "
+                 "channel of TEST is\nscaled by its least-squares factor (the error no "
+                 "normalisation removes); max_abs_error = largest per-channel |a-b|. PNG "
                  "inputs are display\n"
                  "values already: only rmse (of those values) and max_abs_error are meaningful.\n";
     return 0;
@@ -67,7 +69,8 @@ int runCompare(int argc, char** argv) {
   if (args.has("json")) {
     JsonObject j;
     j.add("test", testPath).add("reference", refPath).add("rmse_tonemapped", e.rmseToneMapped);
-    if (linear) j.add("relative_rms", e.relativeRms);
+    if (linear)
+      j.add("relative_rms", e.relativeRms).add("scaled_relative_rms", e.scaledRelativeRms);
     j.add("max_abs_error", e.maxAbsError).add("covered_pixels", double(e.coveredPixels));
     if (linear) {
       j.add("coverage_mismatch", double(e.coverageMismatch));
@@ -79,6 +82,9 @@ int runCompare(int argc, char** argv) {
   } else {
     std::printf("rmse_tonemapped   %.6g\n", e.rmseToneMapped);
     if (linear) std::printf("relative_rms      %.6g\n", e.relativeRms);
+    if (linear)
+      std::printf("scaled_rel_rms    %.6g (after each channel's least-squares scale)\n",
+                  e.scaledRelativeRms);
     std::printf("max_abs_error     %.6g\n", e.maxAbsError);
     if (linear) {
       std::printf("coverage_mismatch %zu of %zu covered pixels\n", e.coverageMismatch,

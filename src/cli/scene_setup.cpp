@@ -154,7 +154,7 @@ technique::Inclusion parseInclusion(const Args& args, const std::string& text, c
   technique::Inclusion inc;
   inc.surface = scene::shapes::sphere(radius, 4, centre);
   for (const auto& p : inc.surface.positions)
-    if (!inside(*s.caster, glm::dvec3(p), 1e-7 * bounds.diagonal()))
+    if (!inside(*s.caster, glm::dvec3(p), 1e-5 * bounds.diagonal()))
       args.fail("--inclusion " + text + ": the sphere (radius " + std::to_string(radius) +
                 " mm at the bounding-box centre) is not inside the object; lower the fraction or "
                 "use a shape that is "
@@ -164,14 +164,87 @@ technique::Inclusion parseInclusion(const Args& args, const std::string& text, c
   inc.description = found->name + " sphere of radius " + std::to_string(radius) + " mm";
   return inc;
 }
+/// The built-in shapes' names, for the help text.
+std::string shapeList() {
+  std::string list;
+  for (const auto& n : scene::builtinShapeNames()) list += (list.empty() ? "" : " ") + n;
+  return list;
+}
+
+/// An inclusion bounded by a closed mesh, with a ray-parity inside test of its own.
+technique::Inclusion meshInclusion(scene::TriangleMesh surface, const optics::Material& material,
+                                   const std::string& description) {
+  technique::Inclusion inc;
+  inc.surface = std::move(surface);
+  inc.medium.material = material;
+  inc.description = description;
+  const auto caster = std::make_shared<raycast::EmbreeRayCaster>(inc.surface);
+  const double epsilon = 1e-5 * inc.surface.bounds().diagonal();  // Embree is float
+  inc.contains = [caster, epsilon](const glm::dvec3& p) { return inside(*caster, p, epsilon); };
+  return inc;
+}
+
+/// Moves a body with the object: the object's mesh was centred on `centre` and scaled by `scale`.
+scene::TriangleMesh placedLikeObject(scene::TriangleMesh body, const glm::dvec3& centre,
+                                     double scale) {
+  for (auto& p : body.positions) p = glm::vec3((glm::dvec3(p) - centre) * scale);
+  return body;
+}
+
+/// Every vertex of the body inside the object, or a clear error.
+void requireInside(const Args& args, const Scene& s, const technique::Inclusion& inc,
+                   const std::string& option) {
+  const double epsilon = 1e-5 * s.mesh.bounds().diagonal();
+  for (const auto& p : inc.surface.positions)
+    if (!inside(*s.caster, glm::dvec3(p), epsilon))
+      args.fail(option + ": " + inc.description +
+                " is not inside the object; give a mesh in the object's own coordinates that "
+                "lies within it");
+}
+
+/// "--inclusion-mesh FILE:MATERIAL": a closed mesh in the object mesh's coordinates.
+technique::Inclusion parseInclusionMesh(const Args& args, const std::string& text,
+                                        const glm::dvec3& centre, double scale) {
+  const auto colon = text.rfind(':');
+  if (colon == std::string::npos)
+    args.fail("--inclusion-mesh " + text + ": give FILE:MATERIAL (`lucent materials` lists them)");
+  const std::string file = text.substr(0, colon), name = text.substr(colon + 1);
+  const auto material = optics::findMaterial(name);
+  if (!material)
+    args.fail("--inclusion-mesh " + text + ": '" + name +
+              "' is not a material; `lucent materials` lists them");
+  scene::TriangleMesh mesh = io::readMesh(file);
+  const scene::MeshReport report = scene::checkMesh(mesh);
+  if (!report.ok())
+    args.fail("--inclusion-mesh " + file + ": the mesh does not bound a volume (" +
+              report.problems().front() + "); repair it first (lucent render --mesh " + file +
+              " --repair reports what is wrong)");
+  return meshInclusion(placedLikeObject(std::move(mesh), centre, scale), *material,
+                       material->name + " body from " + file);
+}
+
+/// The built-in shape's own inner bodies (the bottle's liquid), of --fill's material when given.
+void addInnerBodies(const Args& args, Scene& s, const std::string& shape, const glm::dvec3& centre,
+                    double scale) {
+  const auto bodies = scene::builtinInnerBodies(shape);
+  if (bodies.empty() && args.has("fill"))
+    args.fail("--fill: shape '" + shape + "' has no inner body to fill (the bottle has)");
+  if (args.get("fill", "") == "none") return;  // the inside is the object's own material
+  for (const auto& body : bodies) {
+    const std::string name = args.get("fill", body.defaultMaterial);
+    const auto material = optics::findMaterial(name);
+    if (!material) args.fail("--fill " + name + ": not a material; `lucent materials` lists them");
+    s.inclusions.push_back(meshInclusion(placedLikeObject(body.surface, centre, scale), *material,
+                                         material->name + " as " + body.description));
+  }
+}
 }  // namespace
 
 std::vector<OptionSpec> sceneOptionSpecs() {
   std::vector<OptionSpec> specs{
       {"mesh", "FILE", "mesh to render (.ply .obj .stl .vtp .vtk)"},
       {"shape", "NAME",
-       std::string("built-in shape (default ") + kDefaultShape +
-           "): sphere torus double-torus genus7 cube-cavity twirl slab"},
+       std::string("built-in shape (default ") + kDefaultShape + "): " + shapeList()},
       {"size-mm", "X", "scale the object so its bounding-box diagonal is X mm (default 30)"},
       {"light", "SPEC",
        "point:X,Y,Z[:R,G,B] | dir:X,Y,Z[:R,G,B] | env:FILE.exr[:SCALE] | env:uniform[:SCALE] (mm; "
@@ -190,6 +263,11 @@ std::vector<OptionSpec> sceneOptionSpecs() {
       {"inclusion", "MATERIAL[:F]",
        "a sphere of another material at the bounding-box centre, radius F (default "
        "0.3) of half the smallest extent"},
+      {"inclusion-mesh", "FILE:MATERIAL",
+       "a closed body of another material, in the object mesh's coordinates (repeatable)"},
+      {"fill", "MATERIAL|none",
+       "the material of a built-in shape's inner body (bottle: default Merlot; none: the "
+       "object's own)"},
   };
   for (auto& m : materialOptionSpecs()) specs.push_back(m);
   return specs;
@@ -206,6 +284,9 @@ Scene buildScene(const Args& args) {
     s.mesh = scene::makeBuiltinShape(s.meshName);
   }
   s.sizeMm = args.number("size-mm", kDefaultSizeMm, 1e-6, 1e9);
+  const std::vector<std::string> inclusionMeshes = args.all("inclusion-mesh");
+  if (!inclusionMeshes.empty() && !args.has("mesh"))
+    args.fail("--inclusion-mesh needs --mesh (its coordinates are the object mesh's)");
   if (args.has("repair")) {
     const io::RepairReport repaired = io::repairMesh(s.mesh);
     const auto changes = repaired.changes();
@@ -229,7 +310,8 @@ Scene buildScene(const Args& args) {
       throw InputError("lucent " + args.command() + ": " + msg);
     }
   }
-  s.mesh.scaleToSize(s.sizeMm);
+  const glm::dvec3 unscaledCentre = s.mesh.bounds().center();
+  const double scale = s.mesh.scaleToSize(s.sizeMm);
   s.vertexNormals = s.mesh.vertexNormals();
   s.medium.material = materialFromArgs(args, kDefaultMaterial);
 
@@ -268,6 +350,10 @@ Scene buildScene(const Args& args) {
     s.medium.densityDescription = field.description;
   }
   if (args.has("inclusion")) s.inclusions.push_back(parseInclusion(args, args.get("inclusion"), s));
+  for (const auto& text : inclusionMeshes)
+    s.inclusions.push_back(parseInclusionMesh(args, text, unscaledCentre, scale));
+  if (!args.has("mesh")) addInnerBodies(args, s, s.meshName, unscaledCentre, scale);
+  for (const auto& inc : s.inclusions) requireInside(args, s, inc, "inclusion");
   return s;
 }
 

@@ -242,3 +242,89 @@ TEST_CASE(
                          doctest::Contains("raise voxels"), lt::RequestError);
   }
 }
+
+namespace {
+/// voxel-single's radiance at the surface points straight below `points` (from +z), seen along +z
+/// (a camera far above each point).
+std::vector<glm::dvec3> singleScattering(const TestScene& s, const std::vector<glm::dvec3>& points,
+                                         const lt::KnobList& knobs) {
+  const auto registry = lt::coreRegistry();
+  const lt::Technique& t = registry.get("voxel-single");
+  std::vector<glm::dvec3> out;
+  for (const auto& p : points) {
+    const glm::dvec3 above = p + glm::dvec3(0, 0, 1);
+    const auto hit = s.caster->intersect(above, glm::dvec3(0, 0, -1), 0, 2);
+    REQUIRE(hit);
+    lt::ShadeRequest request;
+    reference::ShadingPoint sp;
+    sp.position = above - glm::dvec3(0, 0, hit->t);
+    sp.triangle = hit->triangle, sp.u = hit->u, sp.v = hit->v, sp.cosOut = 1;
+    request.points = {sp};
+    scene::PinholeCamera eye =
+        scene::PinholeCamera::frame(s.scene.mesh.bounds(), glm::dvec3(0, 0, 1), 8, 8);
+    eye.eye = glm::dvec3(p.x, p.y, 1e9);
+    request.camera = &eye;
+    request.pixels = {0};
+    out.push_back(registry.render(t, s.scene, t.values(knobs), request).frame.radiance[0]);
+  }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("voxel-single: a slab's single scattering in closed form, lit from behind and in front") {
+  // sigma_s = 0.3, sigma_t = 0.8 (g = 0), 2 mm thick, eta 1, seen head-on at its centre.
+  optics::Material m;
+  m.name = "test";
+  m.sigmaA = optics::Rgb<double>(0.5);
+  m.sigmaSPrime = optics::Rgb<double>(0.3);
+  m.eta = 1.0;
+  const double sigmaS = 0.3, sigmaT = 0.8, d = 2;
+  const scene::TriangleMesh slab = scene::shapes::box({20, 20, 1}, 1.0);
+  SUBCASE("back-lit: sigma_s E d e^{-sigma_t d} / 4 pi") {
+    TestScene s(slab, m, {0, 0, -1});
+    const double expected = sigmaS * d * std::exp(-sigmaT * d) / (4 * optics::kPi);
+    const auto coarse = singleScattering(s, {{0, 0, 1}}, {{"voxels", "40"}, {"samples", "16"}});
+    const auto fine = singleScattering(s, {{0, 0, 1}}, {{"voxels", "40"}, {"samples", "256"}});
+    INFO("16 depths: " << coarse[0].x / expected << ", 256: " << fine[0].x / expected);
+    CHECK(fine[0].x / expected == doctest::Approx(1).epsilon(0.002));
+    CHECK(coarse[0].x / expected == doctest::Approx(1).epsilon(0.02));
+  }
+  SUBCASE("front-lit: sigma_s E (1 - e^{-2 sigma_t d}) / (8 pi sigma_t)") {
+    TestScene s(slab, m, {0, 0, 1});
+    const double expected = sigmaS * (1 - std::exp(-2 * sigmaT * d)) / (8 * optics::kPi * sigmaT);
+    const auto coarse = singleScattering(s, {{0, 0, 1}}, {{"voxels", "40"}, {"samples", "4"}});
+    const auto fine = singleScattering(s, {{0, 0, 1}}, {{"voxels", "40"}, {"samples", "256"}});
+    INFO("4 depths: " << coarse[0].x / expected << ", 256: " << fine[0].x / expected);
+    CHECK(fine[0].x / expected == doctest::Approx(1).epsilon(0.002));
+    CHECK(coarse[0].x / expected == doctest::Approx(1).epsilon(0.05));
+  }
+}
+
+TEST_CASE(
+    "voxel-single against the path tracer's single scattering (eta 1): a back-lit cube with a "
+    "cavity, thick (19 mean free paths) and thin") {
+  const auto registry = lt::coreRegistry();
+  for (double sigmaT : {0.2, 1.9}) {
+    optics::Material m = grey(sigmaT);
+    m.sigmaA = optics::Rgb<double>(0.5 * sigmaT), m.sigmaSPrime = optics::Rgb<double>(0.5 * sigmaT);
+    scene::TriangleMesh cube = scene::shapes::cubeWithCavity(0.6);
+    cube.scaleToSize(10 * std::sqrt(3.0));  // 10 mm sides
+    TestScene s(std::move(cube), m, {0.2, 0.3, -1});
+    const scene::PinholeCamera camera =
+        scene::PinholeCamera::frame(s.scene.mesh.bounds(), glm::dvec3(0, 0, 1), 24, 24);
+    const lt::ShadeRequest pixels = lt::pixelRequest(camera, s.scene);
+    auto mean = [&](const char* name, const lt::KnobList& knobs) {
+      const lt::Technique& t = registry.get(name);
+      const auto l = registry.render(t, s.scene, t.values(knobs), pixels).frame.radiance;
+      glm::dvec3 sum(0);
+      for (const auto& v : l) sum += v;
+      return sum.x / double(l.size());
+    };
+    const double truth =
+        mean("pathtrace",
+             {{"spp", "1024"}, {"orders", "single"}, {"subsurface", "1"}, {"boundary", "matched"}});
+    const double single = mean("voxel-single", {{"voxels", "64"}});
+    INFO("sigma_t " << sigmaT << ": voxel-single / path tracer = " << single / truth);
+    CHECK(single / truth == doctest::Approx(1).epsilon(0.03));
+  }
+}

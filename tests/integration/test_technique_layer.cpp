@@ -165,10 +165,10 @@ TEST_CASE("A capability mismatch exits 2 before any work, naming the techniques 
        "techniques that can: reference",
        "test-constant,"},
       {{"--method", "tsis", "--density", "noise:2"},
-       "cannot take a heterogeneous medium (density field); techniques that can: taulut, pathtrace",
+       "cannot take a heterogeneous medium (density field); techniques that can: taulut, voxel-single, pathtrace",
        "tsis,"},
       {{"--method", "reference", "--inclusion", "ketchup"},
-       "cannot take an inclusion of another material; techniques that can: taulut, pathtrace",
+       "cannot take an inclusion of another material; techniques that can: taulut, voxel-single, pathtrace",
        "jensen-buhler"},
   };
   for (const auto& c : cases) {

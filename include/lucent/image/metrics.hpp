@@ -1,7 +1,7 @@
 #pragma once
 /// @file metrics.hpp
-/// @brief Image error metrics of DESIGN.md: RMSE of tone-mapped images (what the papers report), relative
-/// RMS error of linear radiance over covered pixels, and the largest absolute error.
+/// @brief Image error metrics of DESIGN.md: RMSE of tone-mapped images (what the papers report),
+/// relative RMS error of linear radiance over covered pixels, and the largest absolute error.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -13,22 +13,29 @@
 namespace lucent::image {
 
 struct ImageErrors {
-  double rmseToneMapped = 0;  ///< over all pixels and channels, both mapped with the reference's L_avg
-  double relativeRms = 0;     ///< sqrt(sum |a-b|^2 / sum |b|^2) over pixels covered in either image
-  double maxAbsError = 0;     ///< largest per-channel |a-b| of linear radiance
+  double rmseToneMapped =
+      0;                   ///< over all pixels and channels, both mapped with the reference's L_avg
+  double relativeRms = 0;  ///< sqrt(sum |a-b|^2 / sum |b|^2) over pixels covered in either image
+  double maxAbsError = 0;  ///< largest per-channel |a-b| of linear radiance
   std::size_t coveredPixels = 0;
   std::size_t coverageMismatch = 0;  ///< pixels covered in one image only
-  double meanRatio[3] = {0, 0, 0};   ///< per channel: sum of test / sum of reference over covered pixels (bias)
+  double meanRatio[3] = {
+      0, 0, 0};  ///< per channel: sum of test / sum of reference over covered pixels (bias)
+  /// The relative RMS error left after each channel of the test is scaled by its least-squares
+  /// factor sum(ab) / sum(a^2): the error of the image's shape, which no normalisation removes.
+  double scaledRelativeRms = 0;
 };
 
 inline void requireSameSize(const Image& a, const Image& b) {
   if (a.width != b.width || a.height != b.height)
-    throw std::invalid_argument("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
-                                " against " + std::to_string(b.width) + "x" + std::to_string(b.height) +
+    throw std::invalid_argument("images differ in size: " + std::to_string(a.width) + "x" +
+                                std::to_string(a.height) + " against " + std::to_string(b.width) +
+                                "x" + std::to_string(b.height) +
                                 "; render both at the same --width/--height");
 }
 
-/// Errors of display values (already tone-mapped, e.g. read from PNG): RMSE of the values as they are.
+/// Errors of display values (already tone-mapped, e.g. read from PNG): RMSE of the values as they
+/// are.
 inline ImageErrors compareDisplayImages(const Image& test, const Image& reference) {
   requireSameSize(test, reference);
   ImageErrors e;
@@ -40,7 +47,8 @@ inline ImageErrors compareDisplayImages(const Image& test, const Image& referenc
       e.maxAbsError = std::max(e.maxAbsError, std::abs(d));
     }
   e.coveredPixels = reference.pixels.size();
-  e.rmseToneMapped = reference.pixels.empty() ? 0 : std::sqrt(sq / (3.0 * double(reference.pixels.size())));
+  e.rmseToneMapped =
+      reference.pixels.empty() ? 0 : std::sqrt(sq / (3.0 * double(reference.pixels.size())));
   return e;
 }
 
@@ -52,6 +60,7 @@ inline ImageErrors compareImages(const Image& test, const Image& reference, Tone
     toneMap.averageRadiance = meanCoveredLuminance(reference);
   const double avg = toneMap.averageRadiance;
   double sqTone = 0, sqDiff = 0, sqRef = 0, sumTest[3] = {0, 0, 0}, sumRef[3] = {0, 0, 0};
+  double sumAB[3] = {0, 0, 0}, sumAA[3] = {0, 0, 0};
   for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
     const glm::vec4 &a = test.pixels[i], &b = reference.pixels[i];
     const bool ca = test.covered(i), cb = reference.covered(i);
@@ -64,14 +73,20 @@ inline ImageErrors compareImages(const Image& test, const Image& reference, Tone
         sqDiff += d * d;
         sqRef += double(b[c]) * double(b[c]);
         sumTest[c] += double(a[c]), sumRef[c] += double(b[c]);
+        sumAB[c] += double(a[c]) * double(b[c]), sumAA[c] += double(a[c]) * double(a[c]);
         e.maxAbsError = std::max(e.maxAbsError, std::abs(d));
       }
     }
     if (ca || cb) ++e.coveredPixels;
   }
-  e.rmseToneMapped = reference.pixels.empty() ? 0 : std::sqrt(sqTone / (3.0 * double(reference.pixels.size())));
+  e.rmseToneMapped =
+      reference.pixels.empty() ? 0 : std::sqrt(sqTone / (3.0 * double(reference.pixels.size())));
   for (int c = 0; c < 3; ++c) e.meanRatio[c] = sumRef[c] > 0 ? sumTest[c] / sumRef[c] : 0.0;
-  e.relativeRms = sqRef > 0 ? std::sqrt(sqDiff / sqRef) : (sqDiff > 0 ? std::numeric_limits<double>::infinity() : 0.0);
+  double residual = 0;  // sum_c min_k sum (k a - b)^2 = sum b^2 - (sum ab)^2 / sum a^2
+  for (int c = 0; c < 3; ++c) residual += sumAA[c] > 0 ? -sumAB[c] * sumAB[c] / sumAA[c] : 0.0;
+  e.scaledRelativeRms = sqRef > 0 ? std::sqrt(std::max(0.0, (sqRef + residual) / sqRef)) : 0.0;
+  e.relativeRms = sqRef > 0 ? std::sqrt(sqDiff / sqRef)
+                            : (sqDiff > 0 ? std::numeric_limits<double>::infinity() : 0.0);
   return e;
 }
 

@@ -8,6 +8,7 @@
 #include "path_tracing.hpp"
 #include "registry.hpp"
 #include "texture_space.hpp"
+#include "voxel_single.hpp"
 
 namespace lucent::technique {
 
@@ -18,6 +19,7 @@ inline void addCoreTechniques(Registry& registry) {
   registry.add(hybridTechnique());
   registry.add(tsmTechnique());
   registry.add(taulutTechnique());
+  registry.add(voxelSingleTechnique());
   registry.add(pathtraceTechnique());
 }
 

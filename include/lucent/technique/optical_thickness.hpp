@@ -12,45 +12,12 @@
 #include "../voxel/surface_paths.hpp"
 #include "../voxel/surface_voxel_lookup.hpp"
 #include "../voxel/tau_lut_radiance.hpp"
-#include "../voxel/voxelize.hpp"
+#include "scene_media_grid.hpp"
 #include "texture_space.hpp"
 
 namespace lucent::technique {
 
 namespace detail {
-
-/// The scene as media: the object is medium 1, inclusion i is medium 2 + i (filled after the
-/// object, so it wins), a cavity (the mesh's inward shells) is none; density fields sampled at the
-/// voxel centres.
-inline voxel::MediaGrid mediaGridOf(const SceneDescription& scene, int voxelsAlongLongest) {
-  if (scene.inclusions.size() > 254)
-    throw RequestError("taulut: at most 254 inclusions (the grid stores a byte per voxel)");
-  voxel::MediaGrid grid = voxel::gridAround(scene.mesh, voxelsAlongLongest);
-  voxel::fillInside(grid, scene.mesh, 1);
-  for (std::size_t i = 0; i < scene.inclusions.size(); ++i)
-    voxel::fillInside(grid, scene.inclusions[i].surface, std::uint8_t(2 + i));
-  bool heterogeneous = scene.medium.heterogeneous();
-  for (const auto& inc : scene.inclusions) heterogeneous |= inc.medium.heterogeneous();
-  if (!heterogeneous) return grid;
-  grid.density.assign(grid.voxelCount(), 1.f);
-  for (int z = 0; z < grid.dims.z; ++z)
-    for (int y = 0; y < grid.dims.y; ++y)
-      for (int x = 0; x < grid.dims.x; ++x) {
-        const std::size_t i = grid.index({x, y, z});
-        const std::uint8_t m = grid.medium[i];
-        if (m == voxel::kNoMedium) continue;
-        const Medium& medium = m == 1 ? scene.medium : scene.inclusions[m - 2u].medium;
-        if (!medium.density) continue;
-        const double d = medium.density(grid.centre({x, y, z}));
-        if (!(d >= 0 && std::isfinite(d)))
-          throw RequestError("taulut: the density of " + medium.densityDescription + " is " +
-                             std::to_string(d) +
-                             " at a voxel centre; densities must be finite "
-                             "and >= 0");
-        grid.density[i] = float(d);
-      }
-  return grid;
-}
 
 /// sigma_t = sigma_a + sigma_s' of media 1.. (the object's, then the inclusions'), at frame time.
 inline std::vector<glm::dvec3> extinctionOf(const SceneDescription& scene) {
