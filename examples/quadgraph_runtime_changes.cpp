@@ -1,4 +1,4 @@
-// Run-time changes on one QuadGraph without rebuilding it (quadgraph-diffusion Sec. 6.4): the graph is built
+// Run-time changes on one QuadGraph without rebuilding it (Wang et al. 2010 Sec. 6.4): the graph is built
 // once; then the light orbits, the material changes, and the object bends. Each kind of change redoes only
 // what it must: light -> irradiance + solve; material -> assembly + solve; shape -> geometric weights +
 // assembly + solve (TetGen never runs again). Frames are shown on the Sec. 5.3 node surface, which follows

@@ -1,5 +1,5 @@
 //VTK::System::Dec
-// Stage 1 (texture-space-importance-sampling Sec. 3, Eq. 4-7): every triangle is rasterised at its atlas
+// Stage 1 (Chang et al. 2008 Sec. 3, Eq. 4-7): every triangle is rasterised at its atlas
 // coordinates, so each texel receives the irradiance of the surface point it stands for.
 in vec3 positionWC;
 in vec3 normalWC;

@@ -1,6 +1,6 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-// Stage 2 (texture-space-importance-sampling Sec. 3.2, Fig. 2b): N texels drawn in proportion to E'.
+// Stage 2 (Chang et al. 2008 Sec. 3.2, Fig. 2b): N texels drawn in proportion to E'.
 // The atlas's alpha holds R+G+B of the power; its mip chain (box averages, so sums up to a constant)
 // is the pyramid a sample descends: one 2-D point is warped level by level, first left/right by column
 // sums, then top/bottom (as include/lucent/atlas/mip_icdf.hpp does on the CPU). One fragment per sample.

@@ -15,7 +15,7 @@ float lucentFresnelReflectance(float cosIncident, float eta)
   return 0.5 * (rs * rs + rp * rp);
 }
 
-// Ft = 1 - Fr (texture-space-importance-sampling Eq. 2, 4).
+// Ft = 1 - Fr (Chang et al. 2008 Eq. 2, 4).
 float lucentFresnelTransmittance(float cosIncident, float eta)
 {
   return 1.0 - lucentFresnelReflectance(cosIncident, eta);
@@ -47,7 +47,7 @@ vec3 lucentDipolePole(vec3 z, float r, vec3 sigmaTr)
   return mix(z * (1.0 + sd) * e / (d * d * d), vec3(0.0), equal(e, vec3(0.0)));
 }
 
-// Rd(r) in mm^-2, Table 1 of texture-space-importance-sampling (Jensen et al. 2001 Eq. 4).
+// Rd(r) in mm^-2, Table 1 of Chang et al. 2008 (Jensen et al. 2001 Eq. 4).
 vec3 lucentDipoleRd(LucentDipole dipole, float r)
 {
   return dipole.alphaPrime * (1.0 / (4.0 * kPi)) *

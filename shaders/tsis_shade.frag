@@ -1,7 +1,7 @@
 //VTK::System::Dec
 //VTK::Output::Dec
 //LUCENT::Optics
-// Stage 3, per pixel (texture-space-importance-sampling Eq. 10-11):
+// Stage 3, per pixel (Chang et al. 2008 Eq. 10-11):
 //   L(x_o, w_o) = Ft(eta, w_o) / pi * sum_i w_i Rd(|x_i - x_o|).
 in vec3 positionVSOutput;
 in vec3 normalVSOutput;

@@ -1,6 +1,6 @@
 #pragma once
 /// @file quadgraph_pipeline.hpp
-/// @brief QuadGraph split the way the paper runs it (quadgraph-diffusion Sec. 5, Fig. 9): what is built once
+/// @brief QuadGraph split the way the paper runs it (Wang et al. 2010 Sec. 5, Fig. 9): what is built once
 /// per mesh (tetrahedralization, graph, levels, transfers), and what a frame redoes when the light, the
 /// material or the shape changes (irradiance at the surface nodes, assembly, the solve, Eq. 7). Nothing in
 /// a frame rebuilds the tets: a new material reassembles, a deformation recomputes geometric weights only.

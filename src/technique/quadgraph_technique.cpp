@@ -1,4 +1,4 @@
-/// The QuadGraph diffusion technique (quadgraph-diffusion): prepare is a QuadGraphPipeline (TetGen,
+/// The QuadGraph diffusion technique (Wang et al. 2010): prepare is a QuadGraphPipeline (TetGen,
 /// levels, transfers: once per mesh); a frame is irradiance at the surface nodes, the per-channel
 /// solve and Eq. 7, mapped to the requested points or shown on the Sec. 5.3 triangulation of the
 /// surface nodes. An adapter (it links the AGPL TetGen target and VTK for the .vtu export),
@@ -181,9 +181,9 @@ Technique quadgraphTechnique() {
   t.name = "quadgraph";
   t.summary =
       "QuadGraph: the diffusion equation solved on a tetrahedralization's dual graph "
-      "(quadgraph-diffusion)";
+      "(Wang et al. 2010)";
   t.paper =
-      "quadgraph-diffusion, Eq. 1-2 (diffusion), Eq. 5-9 (graph stencil and relaxation), Eq. 7 "
+      "Wang et al. 2010, Eq. 1-2 (diffusion), Eq. 5-9 (graph stencil and relaxation), Eq. 7 "
       "(exitance), Sec. 4.3";
   t.requiredLibrary = "TetGen (AGPL-3.0, src/tetgen)";
   const Phase P = Phase::Prepare;

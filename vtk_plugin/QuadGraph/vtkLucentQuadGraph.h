@@ -1,6 +1,6 @@
 /// @file vtkLucentQuadGraph.h
 /// @brief Adds the QuadGraph technique (the diffusion equation on a TetGen tetrahedralization's dual
-/// graph, quadgraph-diffusion) to vtkLucentFilter's techniques: SetTechnique("quadgraph") with its knobs
+/// graph, Wang et al. 2010) to vtkLucentFilter's techniques: SetTechnique("quadgraph") with its knobs
 /// ("quadgraph.K", "quadgraph.levels", ...). A module of its own because TetGen is AGPL-3.0-or-later.
 /// Loading the module's library registers the technique; Register() does so explicitly (idempotent).
 #ifndef vtkLucentQuadGraph_h

@@ -1,6 +1,6 @@
 /// @file vtkLucentPass.h
 /// @brief Translucent (subsurface-scattering) rendering on the GPU: texture-space importance
-/// sampling (Mertens et al.'s TSIS, texture-space-importance-sampling Sec. 3) as a
+/// sampling (texture-space importance sampling, Chang et al. 2008 Sec. 3) as a
 /// vtkImageProcessingPass.
 ///
 /// Every visible, opaque vtkActor with polygons in the renderer is shaded as one homogeneous

@@ -1,7 +1,7 @@
 /// @file vtkLucentSurface.h
 /// @brief One translucent actor as the GPU path needs it (private to Lucent::Rendering): its
 /// triangles in world coordinates with vertex normals, the texture atlas of
-/// texture-space-importance-sampling Sec. 2.2 (built on the CPU by lucent/atlas/texture_atlas.hpp)
+/// Chang et al. 2008 Sec. 2.2 (built on the CPU by lucent/atlas/texture_atlas.hpp)
 /// and one vertex buffer with, per corner, position, normal, atlas coordinate and the texel area
 /// weight A_S / n_T of Eq. 7. Rebuilt only when the data, the actor's matrix, the size or the atlas
 /// resolution change.

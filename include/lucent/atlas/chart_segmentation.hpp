@@ -3,7 +3,7 @@
 /// @brief Cuts a closed mesh into charts that project onto a plane without flipping: each chart grows
 /// over edge-adjacent triangles whose normals stay within a cone around the seed's normal. Projected
 /// along the cone axis, every triangle keeps its orientation and at least cos(angle) of its area, so the
-/// area ratio A_S/A_T of texture-space-importance-sampling Eq. 6 stays within [1, 1/cos(angle)].
+/// area ratio A_S/A_T of Chang et al. 2008 Eq. 6 stays within [1, 1/cos(angle)].
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

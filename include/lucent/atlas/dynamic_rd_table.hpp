@@ -1,6 +1,6 @@
 #pragma once
 /// @file dynamic_rd_table.hpp
-/// @brief Dynamic material and size (texture-space-importance-sampling Sec. 5.1): the 1-D Rd texture
+/// @brief Dynamic material and size (Chang et al. 2008 Sec. 5.1): the 1-D Rd texture
 /// becomes 2-D, Rd(r, t), where t in [0, 1] interpolates the scattering coefficients (sigma_a, sigma_s',
 /// eta) and the model size linearly from setting A to setting B, as the paper does.
 ///

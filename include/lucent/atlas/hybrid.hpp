@@ -1,6 +1,6 @@
 #pragma once
 /// @file hybrid.hpp
-/// @brief The hybrid method (texture-space-importance-sampling Sec. 4): B = B_l + B_g with
+/// @brief The hybrid method (Chang et al. 2008 Sec. 4): B = B_l + B_g with
 /// B_l = int E Rd Wl dA by translucent shadow maps and B_g = int E Rd Wg dA by texture-space importance
 /// sampling. Also the plain translucent-shadow-map method (f = Rd, no split) as a baseline.
 #include <memory>

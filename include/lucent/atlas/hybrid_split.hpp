@@ -1,6 +1,6 @@
 #pragma once
 /// @file hybrid_split.hpp
-/// @brief The hybrid method's split of Rd into a local and a global term (texture-space-importance-sampling
+/// @brief The hybrid method's split of Rd into a local and a global term (Chang et al. 2008
 /// Sec. 4.1): Rd = Rd Wl + Rd Wg with
 ///   Wl(r) = 1 - 0.5 e^{(r - Rp) K}   for r <= Rp,      Wl(r) = 0.5 e^{-(r - Rp) K}   for r > Rp,
 ///   Wg = 1 - Wl,  K = 1.5 (per mm).

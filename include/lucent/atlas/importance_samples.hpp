@@ -1,6 +1,6 @@
 #pragma once
 /// @file importance_samples.hpp
-/// @brief Stage 2 of texture-space-importance-sampling (Sec. 3): N incident points drawn over the atlas
+/// @brief Stage 2 of Chang et al. 2008 (Sec. 3): N incident points drawn over the atlas
 /// with p = E'/E'avg (Eq. 9), by the mipmap ICDF (Fig. 2b) or the row-major ICDF (Fig. 2a), from
 /// independent or stratified 2-D points. Each sample carries its Eq. 10 weight per channel,
 ///   w_c = E'_c(texel) / (p(texel) N),

@@ -1,6 +1,6 @@
 #pragma once
 /// @file irradiance_atlas.hpp
-/// @brief Stage 1 of texture-space-importance-sampling (Sec. 3): irradiance rendered into the atlas as
+/// @brief Stage 1 of Chang et al. 2008 (Sec. 3): irradiance rendered into the atlas as
 /// E' = A_S E / A_T (Eq. 7), with shadows, and the 3-D position map. Each texel stores its power
 /// E' x (texel area) = E(x_texel) A_S / n_T, n_T the texels its triangle owns, so that the sum over
 /// texels is the quadrature of the surface integral of E: this sum is E'_avg of Eq. 9-11.

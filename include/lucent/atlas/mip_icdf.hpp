@@ -1,7 +1,7 @@
 #pragma once
 /// @file mip_icdf.hpp
 /// @brief Importance sampling of texels in proportion to a non-negative image (the atlas irradiance E'),
-/// texture-space-importance-sampling Sec. 3.2, Fig. 2:
+/// Chang et al. 2008 Sec. 3.2, Fig. 2:
 ///  - MipIcdf (Fig. 2b): a pyramid of sums; a sample descends from the 1x1 top, choosing among the four
 ///    children by their sums. Here the choice warps one 2-D point hierarchically (first left/right by
 ///    column sums, then top/bottom within the chosen column, rescaling the point each time; Clarberg et

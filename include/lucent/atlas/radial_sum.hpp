@@ -1,6 +1,6 @@
 #pragma once
 /// @file radial_sum.hpp
-/// @brief Stage 3 of texture-space-importance-sampling (Sec. 3): B(x_o) = sum_i w_i f(|x_i - x_o|) over
+/// @brief Stage 3 of Chang et al. 2008 (Sec. 3): B(x_o) = sum_i w_i f(|x_i - x_o|) over
 /// the importance samples, f = Rd or a hybrid-weighted profile, looked up in a radial table exactly as
 /// the GPU's 1-D texture does (u = sqrt(r / rMax), linear). Float, vectorised, cloned for AVX2 like the
 /// truth's kernel; blocks of 1024 terms are added in double.

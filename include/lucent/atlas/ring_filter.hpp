@@ -1,6 +1,6 @@
 #pragma once
 /// @file ring_filter.hpp
-/// @brief The circular filter of texture-space-importance-sampling Sec. 4.2: L*C + 1 samples, one at the
+/// @brief The circular filter of Chang et al. 2008 Sec. 4.2: L*C + 1 samples, one at the
 /// centre and C on each of L concentric rings whose radii follow the importance f(r) 2 pi r of the
 /// filtered profile f (Rd Wl for the hybrid's local term, Rd for a plain translucent shadow map), as
 /// Mertens et al. 2003 chose radii.

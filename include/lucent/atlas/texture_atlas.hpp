@@ -1,6 +1,6 @@
 #pragma once
 /// @file texture_atlas.hpp
-/// @brief The texture atlas of texture-space-importance-sampling Sec. 2.2: every triangle gets texture
+/// @brief The texture atlas of Chang et al. 2008 Sec. 2.2: every triangle gets texture
 /// coordinates, charts are packed without overlap with empty gutter texels between them, and each texel
 /// centre is owned by at most one triangle (the one a GPU rasteriser would draw there).
 ///

@@ -1,6 +1,6 @@
 #pragma once
 /// @file translucent_shadow_map.hpp
-/// @brief The local term of the hybrid method (texture-space-importance-sampling Sec. 4.2, after
+/// @brief The local term of the hybrid method (Chang et al. 2008 Sec. 4.2, after
 /// Dachsbacher & Stamminger 2003): the surface as the light sees it, stored on a plane normal to
 /// the light (first hit and the power per unit plane area rho = E / |n_geom . axis|), filtered
 /// around the projection of x_o with the ring filter (ring_filter.hpp) using 3-D distances, so thin

@@ -1,6 +1,6 @@
 #pragma once
 /// @file tsis_evaluator.hpp
-/// @brief Eq. 11 of texture-space-importance-sampling:
+/// @brief Eq. 11 of Chang et al. 2008:
 ///   L(x_o, w_o) = Ft(eta, w_o) / pi * sum_i w_i f(|x_i - x_o|),   w_i = E'(x_i) / (p(x_i) N)  (Eq. 10)
 /// with f = Rd (TSIS) or Rd Wg (the hybrid's global term), looked up in a 1-D table (Sec. 3) or, for
 /// f = Rd, evaluated exactly by the truth's kernel. Ft comes from a 1-D table too.

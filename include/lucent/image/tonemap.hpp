@@ -2,7 +2,7 @@
 /// @file tonemap.hpp
 /// @brief Tone mapping of linear radiance to display values in [0, 1].
 ///
-/// The operator of texture-space-importance-sampling section 3 (DirectX's HDR Lighting sample):
+/// The operator of Chang et al. 2008 section 3 (DirectX's HDR Lighting sample):
 /// s = key * L / L_avg, colour = s / (1 + s), applied per channel, with L_avg the mean luminance of the
 /// covered pixels. The extracted text of the paper lost the fraction's orientation; s/(1+s) is the
 /// operator that maps [0, inf) onto [0, 1). As in the paper, no display gamma is applied: these are the

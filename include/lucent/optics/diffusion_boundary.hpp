@@ -1,7 +1,7 @@
 #pragma once
 /// @file diffusion_boundary.hpp
 /// @brief What the diffusion approximation's boundary takes in and gives out, in one place for the QuadGraph
-/// solver and its analytic sphere (quadgraph-diffusion Eq. 2 and 7).
+/// solver and its analytic sphere (Wang et al. 2010 Eq. 2 and 7).
 ///
 /// At a boundary with internal diffuse reflectance Fdr, the inward partial current phi/4 + (kappa/2) dphi/dn
 /// (n the inward normal) is q (the transmitted incident irradiance) plus Fdr times the outward partial current

@@ -1,7 +1,7 @@
 #pragma once
 /// @file dipole.hpp
 /// @brief The dipole diffusion profile Rd(r) of Jensen et al. 2001 (Table 1 of
-/// texture-space-importance-sampling), its closed-form radial integral and total diffuse reflectance.
+/// Chang et al. 2008), its closed-form radial integral and total diffuse reflectance.
 ///
 /// All lengths in mm, coefficients in mm^-1. Every function is finite for sigma_a = 0 (spectralon:
 /// sigma_tr = 0, no exponential fall-off), for sigma_s' = 0 (clear liquids: alpha' = 0, Rd = 0), for

@@ -1,6 +1,6 @@
 #pragma once
 /// @file dipole_lut.hpp
-/// @brief Rd(r) tabulated on [0, rMax] for fast evaluation (section 3 of texture-space-importance-sampling
+/// @brief Rd(r) tabulated on [0, rMax] for fast evaluation (section 3 of Chang et al. 2008
 /// stores Rd as a 1-D texture over the normalised diagonal), with a bounded, verified error.
 ///
 /// Nodes sit at r_i = rMax (i/(N-1))^2, dense near r = 0 where Rd is sharply peaked on the scale z_r,

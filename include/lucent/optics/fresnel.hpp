@@ -24,14 +24,14 @@ T fresnelReflectance(T cosIncident, T eta) {
   return T(0.5) * (rs * rs + rp * rp);
 }
 
-/// @brief Fresnel transmittance Ft(eta, w) = 1 - Fr (texture-space-importance-sampling Eq. 2, 4).
+/// @brief Fresnel transmittance Ft(eta, w) = 1 - Fr (Chang et al. 2008 Eq. 2, 4).
 template <class T>
 T fresnelTransmittance(T cosIncident, T eta) {
   return T(1) - fresnelReflectance(cosIncident, eta);
 }
 
 /// @brief Diffuse Fresnel reflectance Fdr(eta), the polynomial fit of Jensen et al. 2001 (Table 1 of
-/// texture-space-importance-sampling). Valid on [kEtaMin, kEtaMax].
+/// Chang et al. 2008). Valid on [kEtaMin, kEtaMax].
 template <class T>
 T diffuseFresnelReflectance(T eta) {
   return T(kFdrInvEta2) / (eta * eta) + T(kFdrInvEta) / eta + T(kFdrConst) + T(kFdrEta) * eta;

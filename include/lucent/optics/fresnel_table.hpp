@@ -1,6 +1,6 @@
 #pragma once
 /// @file fresnel_table.hpp
-/// @brief Ft(eta, w_o) as a 1-D table over cos(theta_o) (texture-space-importance-sampling Sec. 3 stores
+/// @brief Ft(eta, w_o) as a 1-D table over cos(theta_o) (Chang et al. 2008 Sec. 3 stores
 /// it as a 1-D texture indexed by n.w_o). Linear interpolation; 256 nodes keep the error below 1e-4
 /// for every eta in [kEtaMin, kEtaMax] except within a node of the critical angle's kink (eta < 1 never
 /// occurs here: light leaves the denser medium, which the dipole folds into Ft(eta) as in Eq. 2).

@@ -1,6 +1,6 @@
 #pragma once
 /// @file block_packing.hpp
-/// @brief Node orderings for memory locality (quadgraph-diffusion Sec. 5.1, Fig. 7): inner nodes are packed
+/// @brief Node orderings for memory locality (Wang et al. 2010 Sec. 5.1, Fig. 7): inner nodes are packed
 /// in blocks of r x r by breadth-first traversal from a seed, the traversal passing through nodes already
 /// assigned without taking them; surface nodes follow their inner nodes (proximity on the surface).
 /// A random ordering is the paper's baseline ("random storage").

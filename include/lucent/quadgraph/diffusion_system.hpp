@@ -1,6 +1,6 @@
 #pragma once
 /// @file diffusion_system.hpp
-/// @brief The discretized diffusion equation on a QuadGraph (quadgraph-diffusion Sec. 4.2), one colour
+/// @brief The discretized diffusion equation on a QuadGraph (Wang et al. 2010 Sec. 4.2), one colour
 /// channel, in a symmetric form every solver shares:
 ///   inner node i:   (sum_j c_ij + a_i) phi_i - sum_j c_ij phi_j = 0
 ///   surface node s: (c_sk + b_s) phi_s - c_sk phi_k = b_s Q_s,   Q_s = 4 q_s / (1 - Fdr)   (Eq. 2, 6)

@@ -1,6 +1,6 @@
 #pragma once
 /// @file multiresolution.hpp
-/// @brief The multi-resolution scheme of quadgraph-diffusion Sec. 4.3: levels built independently from
+/// @brief The multi-resolution scheme of Wang et al. 2010 Sec. 4.3: levels built independently from
 /// simplified surfaces; the coarsest is solved first and each solution, resampled with precomputed
 /// Shepard weights (Eq. 10: w = |x - y|^-2, normalised, from the b nearest coarse nodes of the same kind,
 /// b = 4 for surface nodes and 8 for inner nodes), starts the next level's iterations.

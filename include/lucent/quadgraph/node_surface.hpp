@@ -1,6 +1,6 @@
 #pragma once
 /// @file node_surface.hpp
-/// @brief The display surface of quadgraph-diffusion Sec. 5.3: a triangulation whose vertices are exactly
+/// @brief The display surface of Wang et al. 2010 Sec. 5.3: a triangulation whose vertices are exactly
 /// the QuadGraph's surface nodes, so Eq. 7's radiance is shown where it was computed and follows a
 /// deformation of the graph without any mapping back to the input mesh.
 ///

@@ -1,6 +1,6 @@
 #pragma once
 /// @file quad_graph.hpp
-/// @brief The QuadGraph (quadgraph-diffusion Sec. 4.1): the connectivity graph of a tetrahedralization.
+/// @brief The QuadGraph (Wang et al. 2010 Sec. 4.1): the connectivity graph of a tetrahedralization.
 /// Tets with two or more boundary faces are split at their centroid (Fig. 4) so that every tet has at most
 /// one; each tet becomes an inner node (4 neighbours), and each boundary face a surface node linked to its
 /// tet's inner node (Fig. 5).

@@ -2,7 +2,7 @@
 /// @file surface_mapping.hpp
 /// @brief Between a QuadGraph's surface nodes and the input triangle mesh: where each node sits on its
 /// source triangle (to evaluate irradiance there), and node values spread to the mesh's vertices for
-/// display (quadgraph-diffusion Sec. 5.3 renders a triangulation of the nodes; mapping to the input mesh
+/// display (Wang et al. 2010 Sec. 5.3 renders a triangulation of the nodes; mapping to the input mesh
 /// keeps the user's geometry and normals).
 #include <vector>
 

@@ -1,7 +1,7 @@
 #pragma once
 /// @file diffusion_sphere.hpp
 /// @brief The diffusion equation's exact solution in a homogeneous sphere under uniform illumination, the
-/// analytic check of the QuadGraph solver: div(kappa grad phi) = mu phi inside (quadgraph-diffusion Eq. 1)
+/// analytic check of the QuadGraph solver: div(kappa grad phi) = mu phi inside (Wang et al. 2010 Eq. 1)
 /// gives phi(r) = C sinh(k r) / r, k = sqrt(mu / kappa), and the Robin condition (Eq. 2)
 /// phi(R) + 2 A kappa phi'(R) = 4 q / (1 - Fdr) fixes C. mu = 0 (Laplace) gives phi = 4 q / (1 - Fdr).
 #include <cmath>

@@ -2,7 +2,7 @@
 /// @file dipole_truth.hpp
 /// @brief The brute-force dipole truth: irradiance at dense surface samples and the exact Rd sum
 /// for every shaded point, L(xo, wo) = (1/pi) Ft(eta, wo) B(xo), B(xo) = sum_i E_i A_i Rd(|x_i -
-/// xo|) (texture-space-importance-sampling Eq. 2-3). The model truth every dipole technique is
+/// xo|) (Chang et al. 2008 Eq. 2-3). The model truth every dipole technique is
 /// measured against.
 #include <algorithm>
 #include <atomic>

@@ -5,7 +5,7 @@
 /// A_i, total area and power-weighted position; B(xo) descends the tree and uses a whole node as
 /// one source when it is small as seen from xo, i.e. its area over squared distance is below the
 /// error bound epsilon (their Sec. 3.2 criterion), and xo is outside its box. epsilon = 0 visits
-/// every sample: the exact sum. texture-space-importance-sampling used it as ground truth and speed
+/// every sample: the exact sum. Chang et al. 2008 used it as ground truth and speed
 /// baseline.
 #include <algorithm>
 #include <cstdint>
@@ -51,7 +51,7 @@ class JensenBuhlerTree {
     build(0, 0, n, c - half, c + half, 0);
   }
 
-  /// B(xo) by the hierarchical approximation (Eq. 3 of texture-space-importance-sampling), with the
+  /// B(xo) by the hierarchical approximation (Eq. 3 of Chang et al. 2008), with the
   /// truth's near field integrated as a disc (near_field.hpp; the samples within its radius are
   /// never clustered: a node there has area / distance^2 above any useful epsilon).
   glm::dvec3 radiosity(const glm::dvec3& xo) const {

@@ -2,7 +2,7 @@
 /// @file near_field.hpp
 /// @brief The samples near a shading point, integrated analytically instead of point-sampled.
 ///
-/// The point sum B(xo) = sum_i E_i A_i Rd(|x_i - xo|) (texture-space-importance-sampling Eq. 3)
+/// The point sum B(xo) = sum_i E_i A_i Rd(|x_i - xo|) (Chang et al. 2008 Eq. 3)
 /// resolves Rd only when the sample spacing is below the mean free path; a large object under a
 /// sample budget has samples centimetres apart, and the nearest one, at e^{-sigma_tr r}, gives
 /// nothing: a 10 m sphere came out black. Within a radius rho of xo this replaces the points by a

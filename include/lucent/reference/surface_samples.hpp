@@ -1,7 +1,7 @@
 #pragma once
 /// @file surface_samples.hpp
 /// @brief Dense, deterministic surface samples for the brute-force dipole integral B(xo) = int_A E
-/// Rd dA (texture-space-importance-sampling Eq. 3).
+/// Rd dA (Chang et al. 2008 Eq. 3).
 ///
 /// Each triangle is split into n^2 congruent sub-triangles (n = ceil(longest edge / spacing)) and
 /// each sub-triangle contributes its centroid with its area: the midpoint rule, second-order

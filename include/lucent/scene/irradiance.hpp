@@ -1,7 +1,7 @@
 #pragma once
 /// @file irradiance.hpp
 /// @brief Irradiance transmitted into the surface, E(x) = int L_i(w) Ft(eta, w) |n.w| dw
-/// (texture-space-importance-sampling Eq. 4), with shadows, for every kind of light.
+/// (Chang et al. 2008 Eq. 4), with shadows, for every kind of light.
 #include <cmath>
 #include <cstdint>
 #include <limits>

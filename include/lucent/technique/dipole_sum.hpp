@@ -1,7 +1,7 @@
 #pragma once
 /// @file dipole_sum.hpp
 /// @brief The dipole-sum techniques: the brute-force truth (exact Rd summed over dense surface
-/// samples, texture-space-importance-sampling Eq. 2-3) and Jensen & Buhler's hierarchical
+/// samples, Chang et al. 2008 Eq. 2-3) and Jensen & Buhler's hierarchical
 /// approximation of the same sum. Prepare places the samples; a frame computes their irradiance and
 /// sums B at every point.
 #include <cmath>
@@ -162,7 +162,7 @@ inline Technique referenceTechnique() {
       "brute-force dipole truth: exact Rd summed over dense surface samples (model truth for "
       "dipole methods)";
   t.paper =
-      "Jensen, Marschner, Levoy, Hanrahan 2001, Eq. 5 (dipole); texture-space-importance-sampling "
+      "Jensen, Marschner, Levoy, Hanrahan 2001, Eq. 5 (dipole); Chang et al. 2008 "
       "Eq. 2-3";
   t.knobs = detail::dipoleSumKnobs();
   t.capabilities = detail::dipoleSumCapabilities();

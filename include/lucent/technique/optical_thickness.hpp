@@ -1,6 +1,6 @@
 #pragma once
 /// @file optical_thickness.hpp
-/// @brief The voxel optical-thickness LUT technique ("taulut", voxel-optical-thickness-lut): the
+/// @brief The voxel optical-thickness LUT technique ("taulut", Mochida et al. 2016): the
 /// object and its inclusions voxelised into media, the per-medium path lengths between surface
 /// voxels precomputed (or marched, or clustered), and per frame the light views' irradiance and
 /// voxel-number maps filtered by Eq. 1-3 (include/lucent/voxel/tau_lut_radiance.hpp).

@@ -96,7 +96,7 @@ inline optics::Dipole<double> dipoleOf(const optics::Material& m) {
 }
 }  // namespace detail
 
-/// L(x_o, w_o) = Ft(eta, w_o) B(x_o) / pi (texture-space-importance-sampling Eq. 2; Jensen et al.
+/// L(x_o, w_o) = Ft(eta, w_o) B(x_o) / pi (Chang et al. 2008 Eq. 2; Jensen et al.
 /// 2001's diffuse exitance through the boundary), with the exact dielectric Fresnel term.
 inline glm::dvec3 exitRadiance(const glm::dvec3& radiosity, double cosOut, double eta) {
   return radiosity * (optics::fresnelTransmittance(cosOut, eta) / optics::kPi);

@@ -1,6 +1,6 @@
 #pragma once
 /// @file texture_space.hpp
-/// @brief The techniques of texture-space-importance-sampling: tsis (Sec. 2-3), hybrid (Sec. 4:
+/// @brief The techniques of Chang et al. 2008: tsis (Sec. 2-3), hybrid (Sec. 4:
 /// local Rd Wl by translucent shadow maps + global Rd Wg by tsis) and tsm (the ring filter over all
 /// of Rd). Prepare is the parameterization (once per mesh); a frame is what the paper's run time
 /// redoes when light or material change: irradiance into the atlas, sampling, shadow maps,
@@ -274,7 +274,7 @@ inline Technique tsisTechnique() {
   t.summary =
       "texture-space importance sampling: N samples drawn over the atlas by irradiance, Eq. 11";
   t.paper =
-      "Mertens, Kautz, Bekaert, Van Reeth, Seidel 2003, texture-space-importance-sampling Sec. 3, "
+      "Mertens, Kautz, Bekaert, Van Reeth, Seidel 2003, Chang et al. 2008 Sec. 3, "
       "Eq. 4-11";
   t.knobs =
       detail::concat(detail::samplingKnobs(1600), detail::atlasKnobs(),
@@ -309,7 +309,7 @@ inline Technique hybridTechnique() {
   t.name = "hybrid";
   t.summary =
       "hybrid: local Rd Wl by a translucent shadow map ring filter + global Rd Wg by tsis (Sec. 4)";
-  t.paper = "Mertens et al. 2003, texture-space-importance-sampling Sec. 4, Eq. 12-14";
+  t.paper = "Mertens et al. 2003, Chang et al. 2008 Sec. 4, Eq. 12-14";
   t.knobs = detail::concat(
       detail::samplingKnobs(900), detail::atlasKnobs(), detail::ringKnobs(),
       std::vector<KnobSpec>{
@@ -347,7 +347,7 @@ inline Technique tsmTechnique() {
       "only)";
   t.paper =
       "Dachsbacher, Stamminger 2003, Translucent Shadow Maps; as the local filter of "
-      "texture-space-importance-sampling Sec. 4.2";
+      "Chang et al. 2008 Sec. 4.2";
   t.knobs = detail::concat(detail::ringKnobs(), detail::evaluationKnobs());
   t.capabilities = detail::textureSpaceCapabilities();
   t.capabilities.environmentLights = false;

@@ -3,7 +3,7 @@
 /// @brief The exact walk of a segment through a MediaGrid (Amanatides and Woo, "A Fast Voxel
 /// Traversal Algorithm for Ray Tracing", Eurographics 1987), and the path length through each
 /// medium it gives. With the lengths, the optical thickness of Eq. 4 of
-/// voxel-optical-thickness-lut, tau(x_in, x_out) = int sigma_t dx, is sum_m sigma_t[m] length[m]:
+/// Mochida et al. 2016, tau(x_in, x_out) = int sigma_t dx, is sum_m sigma_t[m] length[m]:
 /// exact for piecewise-constant media, and a material edit recomputes no walk.
 #include <algorithm>
 #include <array>

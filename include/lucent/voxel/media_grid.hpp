@@ -1,7 +1,7 @@
 #pragma once
 /// @file media_grid.hpp
 /// @brief Which medium fills each voxel of a box-shaped grid: the voxel optical-thickness LUT's
-/// (voxel-optical-thickness-lut Sec. 2.1) discretised object. Voxels are boxes with their own
+/// (Mochida et al. 2016 Sec. 2.1) discretised object. Voxels are boxes with their own
 /// spacing per axis (scans are anisotropic); 0 is no medium (outside the object, or a cavity), 1..
 /// are media whose coefficients live elsewhere, so a material edit changes no grid. An optional
 /// density per voxel scales its medium's coefficients (a scan; 1 where absent).

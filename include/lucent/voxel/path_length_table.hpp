@@ -1,6 +1,6 @@
 #pragma once
 /// @file path_length_table.hpp
-/// @brief The look-up table of voxel-optical-thickness-lut Sec. 2.1, stored as the path length
+/// @brief The look-up table of Mochida et al. 2016 Sec. 2.1, stored as the path length
 /// through each medium between every pair of a point set (the surface voxels' centres), so that
 /// tau(a, b) = sum_m sigma_t[m] length[m] (Eq. 4) follows for any material without a new walk.
 ///

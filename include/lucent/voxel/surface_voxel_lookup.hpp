@@ -1,7 +1,7 @@
 #pragma once
 /// @file surface_voxel_lookup.hpp
 /// @brief A surface point's surface voxel: the paper's (u, v) -> number map of
-/// voxel-optical-thickness-lut Sec. 2.1, for vertices, texels and the light view's pixels (the
+/// Mochida et al. 2016 Sec. 2.1, for vertices, texels and the light view's pixels (the
 /// voxel-number map). The voxel holding a point on the mesh may be outside (its centre outside the
 /// mesh), so the number is the nearest surface voxel's centre, searched in growing boxes around the
 /// point's voxel; a point farther than kSearchRadius voxels from every surface voxel (a feature

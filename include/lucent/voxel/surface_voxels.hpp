@@ -1,6 +1,6 @@
 #pragma once
 /// @file surface_voxels.hpp
-/// @brief The surface voxels of voxel-optical-thickness-lut Sec. 2.1, extracted and numbered: the
+/// @brief The surface voxels of Mochida et al. 2016 Sec. 2.1, extracted and numbered: the
 /// voxels of a medium that touch the outside (a face neighbour that is no medium and connected to
 /// the grid's border, or the border itself). A cavity's wall is not surface: light reaches a cavity
 /// only through the medium. The numbers index the LUT's rows and columns.

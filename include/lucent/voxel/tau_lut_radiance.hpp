@@ -1,6 +1,6 @@
 #pragma once
 /// @file tau_lut_radiance.hpp
-/// @brief The run time of voxel-optical-thickness-lut Sec. 2.2: the irradiance map and the
+/// @brief The run time of Mochida et al. 2016 Sec. 2.2: the irradiance map and the
 /// voxel-number map from each light's view, and B(x_out) = int_S E(x_in) Rd(x_in, x_out) dx_in
 /// (Eq. 1) with Rd = e^{-tau} (Eq. 3) summed by a ring filter of taps around x_out's projection.
 ///
