@@ -200,8 +200,8 @@ int runBench(int argc, char** argv) {
               ref.stats.sampleUnit.c_str());
   // speedup: reference time / this time; at equal error: the baseline's interpolated time / this
   // time.
-  std::printf("%-40s %9s %9s %9s %11s %12s %12s %8s %9s\n", "knobs", "seconds", "prepare_s",
-              "frame_s", "samples", "rmse_tone", "rel_rms", "speedup", "eq_error");
+  std::printf("%-40s %9s %9s %9s %11s %9s %12s %12s %8s %9s\n", "knobs", "seconds", "prepare_s",
+              "frame_s", "samples", "data_MiB", "rmse_tone", "rel_rms", "speedup", "eq_error");
   auto emit = [&](const Row& r, bool isBaseline) {
     const double eq = isBaseline
                           ? std::nan("")
@@ -212,10 +212,11 @@ int runBench(int argc, char** argv) {
         << st.bytes << "," << r.memory << "," << r.errors.rmseToneMapped << ","
         << r.errors.relativeRms << "," << r.errors.maxAbsError << "," << ref.seconds / r.seconds
         << "," << eq << "\n";
-    std::printf("%-40s %9.3f %9.3f %9.3f %11.0f %12.3e %12.3e %8.1f %9.2f\n",
+    std::printf("%-40s %9.3f %9.3f %9.3f %11.0f %9.2f %12.3e %12.3e %8.1f %9.2f\n",
                 ((isBaseline ? "[" + r.method + "] " : std::string()) + r.changedKnobs).c_str(),
                 r.seconds, st.totalPrepareSeconds(), st.totalFrameSeconds(), st.samples,
-                r.errors.rmseToneMapped, r.errors.relativeRms, ref.seconds / r.seconds, eq);
+                st.bytes / double(1 << 20), r.errors.rmseToneMapped, r.errors.relativeRms,
+                ref.seconds / r.seconds, eq);
   };
   for (const Row& r : rows) emit(r, false);
   for (const Row& r : baseline) emit(r, true);

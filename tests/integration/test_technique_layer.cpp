@@ -165,10 +165,12 @@ TEST_CASE("A capability mismatch exits 2 before any work, naming the techniques 
        "techniques that can: reference",
        "test-constant,"},
       {{"--method", "tsis", "--density", "noise:2"},
-       "cannot take a heterogeneous medium (density field); techniques that can: taulut, voxel-single, pathtrace",
+       "cannot take a heterogeneous medium (density field); techniques that can: taulut, "
+       "voxel-single, pathtrace",
        "tsis,"},
       {{"--method", "reference", "--inclusion", "ketchup"},
-       "cannot take an inclusion of another material; techniques that can: taulut, voxel-single, pathtrace",
+       "cannot take an inclusion of another material; techniques that can: taulut, voxel-single, "
+       "pathtrace",
        "jensen-buhler"},
   };
   for (const auto& c : cases) {
@@ -249,4 +251,51 @@ TEST_CASE(
       MESSAGE(t.name << ": a material change without a new prepare differs by "
                      << materialDifference << " (declared static)");
   }
+}
+
+namespace {
+void writeObj(const std::string& path, const scene::TriangleMesh& m) {
+  std::ofstream f(path);
+  for (const auto& p : m.positions) f << "v " << p.x << " " << p.y << " " << p.z << "\n";
+  for (const auto& t : m.triangles)
+    f << "f " << t.x + 1 << " " << t.y + 1 << " " << t.z + 1 << "\n";
+}
+}  // namespace
+
+TEST_CASE(
+    "Inner bodies from the CLI: --inclusion-mesh in the object's coordinates, --fill for the "
+    "bottle; bad ones exit 2 with the fix") {
+  test::TempDir dir;
+  const std::string body = dir / "body.obj", core = dir / "core.obj", outside = dir / "out.obj";
+  writeObj(body, scene::shapes::sphere(10.0, 3));
+  writeObj(core, scene::shapes::sphere(4.0, 3, glm::dvec3(2, 0, 0)));
+  writeObj(outside, scene::shapes::sphere(4.0, 3, glm::dvec3(9, 0, 0)));
+  const std::string out = dir / "o.png";
+  const std::vector<std::string> base{"render",   "--width",      "8",      "--height",
+                                      "8",        "--quiet",      "--out",  out,
+                                      "--method", "voxel-single", "--knob", "voxels=12"};
+  auto run = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = base;
+    args.insert(args.end(), extra.begin(), extra.end());
+    return runCli(args, dir);
+  };
+  CliRun r = run({"--mesh", body, "--inclusion-mesh", core + ":Ketchup"});
+  INFO(r.err);
+  CHECK(r.code == 0);
+  CHECK(contains(r.err, "Ketchup body from " + core));
+  r = run({"--mesh", body, "--inclusion-mesh", outside + ":Ketchup"});
+  CHECK(r.code == 2);
+  CHECK(contains(r.err, "is not inside the object"));
+  r = run({"--mesh", body, "--inclusion-mesh", core + ":Jelly"});
+  CHECK(r.code == 2);
+  CHECK(contains(r.err, "'Jelly' is not a material"));
+  r = run({"--shape", "sphere", "--inclusion-mesh", core + ":Ketchup"});
+  CHECK(r.code == 2);
+  CHECK(contains(r.err, "--inclusion-mesh needs --mesh"));
+  r = run({"--shape", "sphere", "--fill", "Merlot"});
+  CHECK(r.code == 2);
+  CHECK(contains(r.err, "has no inner body"));
+  r = run({"--shape", "bottle", "--fill", "Cranberry Juice"});
+  CHECK(r.code == 0);
+  CHECK(contains(r.err, "Cranberry Juice as the liquid"));
 }

@@ -88,9 +88,11 @@ class TranslucentShadowMap {
 
   /// Calls visit(texel, k, share) for each ring-filter tap around x_o's projection that lands on a
   /// covered texel: k the tap's stratum (0 = the centre), share its part of the stratum (1/C on a
-  /// ring).
+  /// ring). `turn` rotates the rings (radians): a turn per shaded point trades the pattern's fixed
+  /// spokes for noise.
   template <class Visit>
-  void forEachTap(const glm::dvec3& xo, const RingFilter& ring, Visit&& visit) const {
+  void forEachTap(const glm::dvec3& xo, const RingFilter& ring, Visit&& visit,
+                  double turn = 0) const {
     const glm::dvec3 rel = xo - mCenter;
     const double pu = glm::dot(rel, mT), pv = glm::dot(rel, mB);
     auto at = [&](double u, double v, std::size_t k, double share) {
@@ -105,7 +107,7 @@ class TranslucentShadowMap {
         2.399963229728653;  // rings turn by the golden angle: no aligned spokes
     for (int k = 1; k <= ring.rings; ++k)
       for (int c = 0; c < ring.perRing; ++c) {
-        const double phi = kGolden * k + 2 * optics::kPi * c / ring.perRing;
+        const double phi = turn + kGolden * k + 2 * optics::kPi * c / ring.perRing;
         at(pu + ring.radius[std::size_t(k)] * std::cos(phi),
            pv + ring.radius[std::size_t(k)] * std::sin(phi), std::size_t(k), 1.0 / ring.perRing);
       }

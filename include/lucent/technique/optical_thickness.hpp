@@ -75,8 +75,10 @@ class TauLut final : public Prepared {
     std::vector<atlas::TranslucentShadowMap> maps = lightViews(scene, stats);
     const std::vector<glm::dvec3> sigmaT = extinctionOf(scene);
     const voxel::TauLutRadiance model = stats.timeFrame("voxel_number_maps", [&] {
-      return voxel::TauLutRadiance(std::move(maps), mPaths, mLookup, sigmaT, taps(),
-                                   scene.mesh.bounds().diagonal());
+      voxel::TauLutRadiance m(std::move(maps), mPaths, mLookup, sigmaT, taps(),
+                              scene.mesh.bounds().diagonal());
+      m.setRotatedPattern(mKnobs.pick<bool>("pattern", {{"rotated", true}, {"fixed", false}}));
+      return m;
     });
     stats.samples = double(taps());
     stats.sampleUnit = "filter taps";
@@ -166,6 +168,9 @@ inline Technique taulutTechnique() {
       KnobSpec::integer("rings", 4, 1, 1000,
                         "rings of 5 taps around the centre tap (4: the 21 taps of translucent "
                         "shadow maps)"),
+      KnobSpec::choice("pattern", {"rotated", "fixed"},
+                       "taps: turned by a per-point angle (noise) or the same for every point "
+                       "(the paper's fixed pattern: structured blotches)"),
       KnobSpec::integer("map", 512, 8, 8192,
                         "irradiance and voxel-number map resolution (texels per side)"),
       KnobSpec::choice("eval", {"pixel", "vertex"},

@@ -66,6 +66,9 @@ class TauLutRadiance {
     }
   }
 
+  /// Whether each point turns the tap pattern by its own angle (a hash of its position).
+  void setRotatedPattern(bool rotated) { mRotated = rotated; }
+
   /// B(x_out), W/mm^2 (Eq. 1 without its Ft / pi).
   glm::dvec3 radiosity(const glm::dvec3& xo) const {
     const std::int32_t out = mLookup.numberOf(xo);
@@ -74,15 +77,19 @@ class TauLutRadiance {
     for (std::size_t l = 0; l < mMaps.size(); ++l) {
       const auto& map = mMaps[l];
       const auto& numbers = mNumberMaps[l];
-      map.forEachTap(xo, mFilter, [&](std::size_t texel, std::size_t k, double share) {
-        const std::int32_t in = numbers[texel];
-        if (in < 0) return;
-        const glm::dvec3 tau = opticalThickness(in, map.position(texel), out, xo);
-        for (int c = 0; c < 3; ++c)
-          if (mFilter.profileAt[k][c] > 0)
-            b[c] += share * mFilter.mass[k][c] * map.density(texel)[c] * std::exp(-tau[c]) /
-                    mFilter.profileAt[k][c];
-      });
+      const double turn = mRotated ? turnOf(xo, map.texelSize()) : 0.0;
+      map.forEachTap(
+          xo, mFilter,
+          [&](std::size_t texel, std::size_t k, double share) {
+            const std::int32_t in = numbers[texel];
+            if (in < 0) return;
+            const glm::dvec3 tau = opticalThickness(in, map.position(texel), out, xo);
+            for (int c = 0; c < 3; ++c)
+              if (mFilter.profileAt[k][c] > 0)
+                b[c] += share * mFilter.mass[k][c] * map.density(texel)[c] * std::exp(-tau[c]) /
+                        mFilter.profileAt[k][c];
+          },
+          turn);
     }
     const glm::dvec3 sigmaOut = mediumAt(out);
     return b * (sigmaOut * sigmaOut / (2 * optics::kPi));
@@ -93,6 +100,16 @@ class TauLutRadiance {
   const std::vector<std::int32_t>& numberMap(std::size_t l) const { return mNumberMaps[l]; }
 
  private:
+  /// An angle in [0, 2 pi / 5) from x_o's position quantised to a quarter texel: deterministic, and
+  /// uncorrelated between neighbouring pixels.
+  static double turnOf(const glm::dvec3& xo, double texel) {
+    const glm::ivec3 q(glm::floor(xo / (0.25 * texel)));
+    std::uint32_t h = std::uint32_t(q.x) * 73856093u ^ std::uint32_t(q.y) * 19349663u ^
+                      std::uint32_t(q.z) * 83492791u;
+    h ^= h >> 16, h *= 0x45d9f3bu, h ^= h >> 16;
+    return 2 * optics::kPi / kTapsPerRing * double(h) / 4294967296.0;
+  }
+
   /// tau per channel from surface voxel a (point xa) to b (point xb).
   glm::dvec3 opticalThickness(std::int32_t a, const glm::dvec3& xa, std::int32_t b,
                               const glm::dvec3& xb) const {
@@ -120,6 +137,7 @@ class TauLutRadiance {
   const SurfaceVoxelLookup& mLookup;
   std::vector<glm::dvec3> mSigmaT;
   atlas::RingFilter mFilter;
+  bool mRotated = true;
   std::vector<std::vector<std::int32_t>> mNumberMaps;
 };
 
