@@ -1,8 +1,10 @@
 #include "scene_setup.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <sstream>
 
 #include <lucent/scene/mesh_check.hpp>
@@ -10,6 +12,8 @@
 #include "../io/exr_io.hpp"
 #include "../io/mesh_io.hpp"
 #include "../io/mesh_repair.hpp"
+#include "../io/vtk_isosurface.hpp"
+#include "../io/vtk_volume.hpp"
 #include "../raycast/embree_ray_caster.hpp"
 #include "../render/density_field.hpp"
 #include "../scene/builtin_shapes.hpp"
@@ -238,6 +242,39 @@ void addInnerBodies(const Args& args, Scene& s, const std::string& shape, const 
                                          material->name + " as " + body.description));
   }
 }
+/// "--volume FILE[:ARRAY] --iso X": the scan, and its isosurface at X as the object's surface.
+std::shared_ptr<const scene::VoxelGrid> readScan(const Args& args, Scene& s) {
+  std::string path = args.get("volume"), array;
+  const auto colon = path.rfind(':');
+  if (!std::filesystem::exists(path) && colon != std::string::npos)
+    array = path.substr(colon + 1), path = path.substr(0, colon);
+  auto scan = std::make_shared<scene::VoxelGrid>(io::readImageVolume(path, array));
+  const auto [lo, hi] = std::minmax_element(scan->values.begin(), scan->values.end());
+  if (!args.has("iso"))
+    args.fail("--volume " + path +
+              ": give --iso X, the value whose isosurface is the object's "
+              "surface (the values span [" +
+              std::to_string(*lo) + ", " + std::to_string(*hi) + "])");
+  const double iso = args.number("iso", 0, -1e30, 1e30);
+  s.meshName = path;
+  s.mesh = io::scanIsosurface(*scan, iso, "--volume " + path);
+  return scan;
+}
+
+/// The scan's values normalised to [0, 1] over their range scale the material (no transfer
+/// function given): the object was centred on `centre` and scaled by `scale`.
+void scanDensity(const scene::VoxelGrid& scan, const glm::dvec3& centre, double scale, Scene& s) {
+  const auto [lo, hi] = std::minmax_element(scan.values.begin(), scan.values.end());
+  const double low = *lo, span = double(*hi) - double(*lo);
+  auto grid = std::make_shared<const scene::VoxelGrid>(scan);
+  s.medium.density = [grid, low, span, centre, scale](const glm::dvec3& p) {
+    return span > 0 ? std::clamp((grid->sample(p / scale + centre) - low) / span, 0.0, 1.0) : 1.0;
+  };
+  s.medium.densityDescription = s.meshName + " (" + std::to_string(scan.dims.x) + "x" +
+                                std::to_string(scan.dims.y) + "x" + std::to_string(scan.dims.z) +
+                                " voxels, values over [" + std::to_string(low) + ", " +
+                                std::to_string(low + span) + "] normalised to [0, 1])";
+}
 }  // namespace
 
 std::vector<OptionSpec> sceneOptionSpecs() {
@@ -263,6 +300,11 @@ std::vector<OptionSpec> sceneOptionSpecs() {
       {"inclusion", "MATERIAL[:F]",
        "a sphere of another material at the bounding-box centre, radius F (default "
        "0.3) of half the smallest extent"},
+      {"volume", "FILE[:ARRAY]",
+       "a scan as the object (.vti .vtk .nrrd .nhdr .mha .mhd .nii .nii.gz, or a DICOM folder): "
+       "its "
+       "isosurface at --iso is the surface, its values normalised to [0, 1] scale --material"},
+      {"iso", "X", "the scan value whose isosurface bounds the object (with --volume)"},
       {"inclusion-mesh", "FILE:MATERIAL",
        "a closed body of another material, in the object mesh's coordinates (repeatable)"},
       {"fill", "MATERIAL|none",
@@ -275,15 +317,22 @@ std::vector<OptionSpec> sceneOptionSpecs() {
 
 Scene buildScene(const Args& args) {
   Scene s;
-  if (args.has("mesh") && args.has("shape")) args.fail("give either --mesh or --shape, not both");
-  if (args.has("mesh")) {
+  if (int(args.has("mesh")) + int(args.has("shape")) + int(args.has("volume")) > 1)
+    args.fail("give one of --mesh, --shape and --volume");
+  std::shared_ptr<const scene::VoxelGrid> scan;
+  if (args.has("volume")) {
+    if (args.has("density"))
+      args.fail("--volume brings its own density (the scan's values); drop --density");
+    scan = readScan(args, s);
+  } else if (args.has("mesh")) {
     s.meshName = args.get("mesh");
     s.mesh = io::readMesh(s.meshName);
   } else {
     s.meshName = args.get("shape", kDefaultShape);
     s.mesh = scene::makeBuiltinShape(s.meshName);
   }
-  s.sizeMm = args.number("size-mm", kDefaultSizeMm, 1e-6, 1e9);
+  // A scan keeps its own millimetres unless --size-mm asks otherwise.
+  s.sizeMm = args.number("size-mm", scan ? s.mesh.bounds().diagonal() : kDefaultSizeMm, 1e-6, 1e9);
   const std::vector<std::string> inclusionMeshes = args.all("inclusion-mesh");
   if (!inclusionMeshes.empty() && !args.has("mesh"))
     args.fail("--inclusion-mesh needs --mesh (its coordinates are the object mesh's)");
@@ -349,6 +398,7 @@ Scene buildScene(const Args& args) {
     s.medium.density = field.at;
     s.medium.densityDescription = field.description;
   }
+  if (scan) scanDensity(*scan, unscaledCentre, scale, s);
   if (args.has("inclusion")) s.inclusions.push_back(parseInclusion(args, args.get("inclusion"), s));
   for (const auto& text : inclusionMeshes)
     s.inclusions.push_back(parseInclusionMesh(args, text, unscaledCentre, scale));

@@ -7,10 +7,14 @@
 #include <filesystem>
 
 #include <vtkAlgorithm.h>
+#include <vtkDICOMImageReader.h>
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
+#include <vtkMetaImageReader.h>
+#include <vtkNIFTIImageReader.h>
 #include <vtkNew.h>
+#include <vtkNrrdReader.h>
 #include <vtkPointData.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkStructuredPoints.h>
@@ -46,30 +50,64 @@ void checkDeclaredExtent(vtkAlgorithm& reader, const std::string& path) {
 }
 }  // namespace
 
+/// Reads through `reader` after bounding its header's extent; the reader must outlive the image.
+template <class Reader>
+vtkImageData* readWith(Reader& reader, const std::string& path) {
+  const QuietVtk quiet;
+  checkDeclaredExtent(reader, path);
+  reader.Update();
+  return reader.GetOutput();
+}
+
+constexpr const char* kFormats =
+    ".vti (VTK XML image data), .vtk (legacy structured points), .nrrd/.nhdr, .mha/.mhd "
+    "(MetaImage), .nii/.nii.gz (NIfTI) or a folder of DICOM slices";
+
 scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arrayName) {
-  if (!std::filesystem::is_regular_file(path))
-    throw InputError(path + ": no such file; give an existing .vti (VTK XML image data) volume");
+  const bool folder = std::filesystem::is_directory(path);
+  if (!folder && !std::filesystem::is_regular_file(path))
+    throw InputError(path + ": no such file; give an existing volume: " + kFormats);
   vtkImageData* image = nullptr;
   vtkNew<vtkXMLImageDataReader> xml;
   vtkNew<vtkStructuredPointsReader> legacy;
-  if (endsWith(path, ".vti")) {
+  vtkNew<vtkNrrdReader> nrrd;
+  vtkNew<vtkMetaImageReader> meta;
+  vtkNew<vtkNIFTIImageReader> nifti;
+  vtkNew<vtkDICOMImageReader> dicom;
+  double slope = 1, intercept = 0;  // NIfTI stores values to be rescaled
+  auto refuse = [&](const char* what) {
+    throw InputError(path + ": not a readable " + what +
+                     " file; check it in ParaView, or convert "
+                     "it to .vti there");
+  };
+  if (folder) {
+    dicom->SetDirectoryName(path.c_str());
+    image = readWith(*dicom, path);
+  } else if (endsWith(path, ".vti")) {
     if (!xml->CanReadFile(path.c_str()))
       throw InputError(path +
                        ": not a VTK XML image-data file; save the volume from ParaView as .vti");
-    const QuietVtk quiet;
     xml->SetFileName(path.c_str());
-    checkDeclaredExtent(*xml, path);
-    xml->Update();
-    image = xml->GetOutput();
+    image = readWith(*xml, path);
   } else if (endsWith(path, ".vtk")) {
-    const QuietVtk quiet;
     legacy->SetFileName(path.c_str());
-    checkDeclaredExtent(*legacy, path);
-    legacy->Update();
-    image = legacy->GetOutput();
+    image = readWith(*legacy, path);
+  } else if (endsWith(path, ".nrrd") || endsWith(path, ".nhdr")) {
+    if (!nrrd->CanReadFile(path.c_str())) refuse("NRRD");
+    nrrd->SetFileName(path.c_str());
+    image = readWith(*nrrd, path);
+  } else if (endsWith(path, ".mha") || endsWith(path, ".mhd")) {
+    if (!meta->CanReadFile(path.c_str())) refuse("MetaImage");
+    meta->SetFileName(path.c_str());
+    image = readWith(*meta, path);
+  } else if (endsWith(path, ".nii") || endsWith(path, ".nii.gz")) {
+    if (!nifti->CanReadFile(path.c_str())) refuse("NIfTI");
+    nifti->SetFileName(path.c_str());
+    image = readWith(*nifti, path);
+    slope = nifti->GetRescaleSlope() != 0 ? nifti->GetRescaleSlope() : 1.0;
+    intercept = nifti->GetRescaleIntercept();
   } else {
-    throw InputError(
-        path + ": unknown volume extension; give a .vti (or legacy .vtk structured points) file");
+    throw InputError(path + ": unknown volume format; give " + kFormats);
   }
   int dims[3] = {0, 0, 0};
   if (image) image->GetDimensions(dims);
@@ -99,15 +137,15 @@ scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arr
     if (!std::isfinite(spacing[k]) || !std::isfinite(origin[k]))
       throw InputError(path +
                        ": the volume's spacing or origin is not finite; fix the file's header");
-  const double h = spacing[0];
-  if (!(h > 0) || std::abs(spacing[1] - h) > 1e-6 * h || std::abs(spacing[2] - h) > 1e-6 * h)
-    throw InputError(path + ": voxels are " + std::to_string(spacing[0]) + " x " +
-                     std::to_string(spacing[1]) + " x " + std::to_string(spacing[2]) +
-                     "; lucent needs cubic voxels (resample with vtkImageResample)");
+  for (int k = 0; k < 3; ++k)
+    if (!(spacing[k] > 0))
+      throw InputError(path + ": the voxel spacing along axis " + std::to_string(k) + " is " +
+                       std::to_string(spacing[k]) +
+                       "; it must be positive (fix the file's header)");
   scene::VoxelGrid grid;
   grid.dims = {dims[0], dims[1], dims[2]};
   grid.origin = {origin[0], origin[1], origin[2]};
-  grid.voxelSize = h;
+  grid.spacing = {spacing[0], spacing[1], spacing[2]};
   const vtkIdType n = array->GetNumberOfTuples();
   if (double(n) != voxels)
     throw InputError(path + ": the array '" +
@@ -121,7 +159,8 @@ scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arr
     double sum = 0;
     for (int c = 0; c < components; ++c)
       sum += array->GetComponent(i, c) * array->GetComponent(i, c);
-    const double v = components == 1 ? array->GetComponent(i, 0) : std::sqrt(sum);
+    const double v =
+        slope * (components == 1 ? array->GetComponent(i, 0) : std::sqrt(sum)) + intercept;
     if (!std::isfinite(v))
       throw InputError(path + ": voxel " + std::to_string(i) + " of '" +
                        std::string(array->GetName() ? array->GetName() : "scalars") +

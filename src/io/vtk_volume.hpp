@@ -1,7 +1,9 @@
 #pragma once
 /// @file vtk_volume.hpp
-/// @brief A scanned volume from a VTK image file (.vti, or legacy .vtk structured points) as lucent's
-/// dense VoxelGrid: the path by which a ParaView user's CT or MRI scan becomes a medium.
+/// @brief A scanned volume read by VTK (.vti, legacy .vtk, .nrrd/.nhdr, .mha/.mhd, .nii/.nii.gz, or a
+/// folder of DICOM slices) as lucent's dense VoxelGrid, spacing per axis: the path by which a
+/// ParaView user's CT or MRI scan becomes a medium. Orientation matrices (NIfTI's qform/sform, DICOM's
+/// direction cosines) are not applied: the grid is axis-aligned at the file's origin and spacing.
 #include <string>
 
 #include <lucent/scene/voxel_grid.hpp>
@@ -9,8 +11,9 @@
 namespace lucent::io {
 
 /// Reads one point-data array (`arrayName`, "" = the active scalars or else the first array) as floats;
-/// a multi-component array gives its magnitude. Throws InputError naming the file, the problem (missing,
-/// unreadable, no such array, non-cubic voxels, empty) and the fix.
+/// a multi-component array gives its magnitude; NIfTI values are rescaled by the header's slope and
+/// intercept. Throws InputError naming the file, the problem (missing, unreadable, no such array,
+/// non-positive spacing, empty, too large) and the fix.
 scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arrayName = "");
 
 }  // namespace lucent::io

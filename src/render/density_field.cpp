@@ -70,7 +70,7 @@ DensityField parseDensityField(const std::string& option, const std::string& spe
   const glm::dvec3 lo = bounds.lo, extent = bounds.hi - bounds.lo;
   field.at = [voxels, maxValue, lo, extent](const glm::dvec3& p) {
     const glm::dvec3 u = (p - lo) / extent;
-    const glm::dvec3 local = voxels->origin + u * glm::dvec3(voxels->dims - 1) * voxels->voxelSize;
+    const glm::dvec3 local = voxels->origin + u * glm::dvec3(voxels->dims - 1) * voxels->spacing;
     return std::max(0.0, voxels->sample(local) / maxValue);
   };
   field.description = path + " (" + std::to_string(voxels->dims.x) + "x" +

@@ -1,11 +1,8 @@
 #include "builtin_shapes.hpp"
 
-#include <vtkCleanPolyData.h>
 #include <vtkFloatArray.h>
-#include <vtkFlyingEdges3D.h>
 #include <vtkImageData.h>
 #include <vtkPointData.h>
-#include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
 #include <cmath>
@@ -14,7 +11,7 @@
 #include <glm/geometric.hpp>
 #include <lucent/scene/shapes.hpp>
 
-#include "../io/vtk_mesh.hpp"
+#include "../io/vtk_isosurface.hpp"
 #include "../util/error.hpp"
 
 namespace lucent::scene {
@@ -50,24 +47,7 @@ TriangleMesh contour(const std::function<double(const glm::dvec3&)>& f, glm::dve
         values->SetValue(id++, float(f(p) + 1e-7));
       }
   grid->GetPointData()->SetScalars(values);
-  auto fe = vtkSmartPointer<vtkFlyingEdges3D>::New();
-  fe->SetInputData(grid);
-  fe->SetValue(0, 0.0);
-  fe->ComputeNormalsOff();
-  fe->ComputeGradientsOff();
-  fe->ComputeScalarsOff();
-  // Contouring leaves slivers where the surface passes within rounding of a grid node; merging
-  // points closer than 1e-5 of the box collapses them into edges, which the cleaner then drops (no
-  // holes open).
-  auto weld = vtkSmartPointer<vtkCleanPolyData>::New();
-  weld->SetInputConnection(fe->GetOutputPort());
-  weld->SetTolerance(1e-5);
-  weld->ConvertPolysToLinesOff();
-  weld->ConvertLinesToPointsOff();
-  weld->Update();
-  TriangleMesh m = io::fromPolyData(weld->GetOutput());
-  shapes::detail::orientOutward(m);
-  return m;
+  return io::isosurfaceOf(grid, 0.0);
 }
 
 TriangleMesh tangentTori(int count, bool ring) {

@@ -95,7 +95,7 @@ scene::VoxelGrid readFloatGrid(const std::string& path, const std::string& gridN
                       "resample or crop the grid");
   const openvdb::Coord lo = box.min(), dim = box.dim();
   out.dims = {dim.x(), dim.y(), dim.z()};
-  out.voxelSize = vs.x();
+  out.spacing = glm::dvec3(vs.x());
   const openvdb::Vec3d o = grid->indexToWorld(lo);
   out.origin = {o.x(), o.y(), o.z()};
   out.values.resize(std::size_t(dim.x()) * std::size_t(dim.y()) * std::size_t(dim.z()));
@@ -118,7 +118,7 @@ void writeFloatGrid(const std::string& path, const scene::VoxelGrid& grid,
   initialize();
   auto vdbGrid = openvdb::FloatGrid::create(background);
   vdbGrid->setName(gridName);
-  auto transform = openvdb::math::Transform::createLinearTransform(grid.voxelSize);
+  auto transform = openvdb::math::Transform::createLinearTransform(grid.spacing.x);
   transform->postTranslate(openvdb::Vec3d(grid.origin.x, grid.origin.y, grid.origin.z));
   vdbGrid->setTransform(transform);
   auto accessor = vdbGrid->getAccessor();

@@ -603,19 +603,25 @@ TEST_CASE(
   CHECK(dense > 100);
   CHECK(thin > 100);
 
-  // Bad volumes: a missing array names the ones there are; non-cubic voxels name the fix; nothing
-  // written.
+  // Bad volumes: a missing array names the ones there are; a spacing of 0 names the fix; nothing
+  // written. Anisotropic spacing (scans have it) is read.
   const Run noArray = lucentCli("render --shape sphere --quiet --method quadgraph --density " +
                                     vti + ":bone --out " + dir / "x.exr",
                                 dir);
   CHECK(noArray.code == 2);
   CHECK(contains(noArray.err, "no point-data array 'bone'; the file has: density"));
   writeHalfDensityVti(dir / "stretched.vti", 0.7);
-  const Run stretched = lucentCli("render --shape sphere --quiet --method quadgraph --density " +
-                                      dir / "stretched.vti" + " --out " + dir / "x.exr",
-                                  dir);
-  CHECK(stretched.code == 2);
-  CHECK(contains(stretched.err, "cubic voxels"));
+  const Run stretched = lucentCli(
+      "render --shape sphere --quiet --width 8 --height 8 --method voxel-single --density " +
+          dir / "stretched.vti" + " --out " + dir / "stretched.exr",
+      dir);
+  CHECK(stretched.code == 0);
+  writeHalfDensityVti(dir / "flat.vti", 0.0);
+  const Run flat = lucentCli("render --shape sphere --quiet --method quadgraph --density " +
+                                 dir / "flat.vti" + " --out " + dir / "x.exr",
+                             dir);
+  CHECK(flat.code == 2);
+  CHECK(contains(flat.err, "spacing along axis 2 is 0"));
   // A header declaring 10^15 voxels over three numbers of data: refused from the header, before VTK
   // allocates for it.
   std::ofstream(dir / "huge.vti")
@@ -653,4 +659,94 @@ TEST_CASE("A closed box with a sliver quad and T-junctions is closed, not 'holes
                           dir);
   INFO(r.err);
   CHECK(r.code == 0);
+}
+
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkNIFTIImageWriter.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+
+namespace {
+/// A ball of radius 8 mm whose values rise inwards (100 per mm from its surface), 40 x 40 x 24
+/// voxels of 0.5 x 0.5 x 0.8 mm (anisotropic, as scans are), values x fastest.
+std::vector<float> ballValues() {
+  std::vector<float> v;
+  for (int k = 0; k < 24; ++k)
+    for (int j = 0; j < 40; ++j)
+      for (int i = 0; i < 40; ++i) {
+        const double x = (i - 19.5) * 0.5, y = (j - 19.5) * 0.5, z = (k - 11.5) * 0.8;
+        v.push_back(float(std::max(0.0, 100 * (8 - std::sqrt(x * x + y * y + z * z)))));
+      }
+  return v;
+}
+void writeBallNrrd(const std::string& path) {
+  const auto v = ballValues();
+  std::ofstream f(path, std::ios::binary);
+  f << "NRRD0004\ntype: float\ndimension: 3\nsizes: 40 40 24\nspacings: 0.5 0.5 0.8\n"
+       "encoding: raw\nendian: little\n\n";
+  f.write(reinterpret_cast<const char*>(v.data()), std::streamsize(v.size() * sizeof(float)));
+}
+void writeBallMetaImage(const std::string& mhd, const std::string& raw) {
+  const auto v = ballValues();
+  std::ofstream(mhd) << "ObjectType = Image\nNDims = 3\nDimSize = 40 40 24\n"
+                        "ElementSpacing = 0.5 0.5 0.8\nElementType = MET_FLOAT\nElementDataFile = "
+                     << std::filesystem::path(raw).filename().string() << "\n";
+  std::ofstream(raw, std::ios::binary)
+      .write(reinterpret_cast<const char*>(v.data()), std::streamsize(v.size() * sizeof(float)));
+}
+void writeBallNifti(const std::string& path) {
+  const auto v = ballValues();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(40, 40, 24);
+  image->SetSpacing(0.5, 0.5, 0.8);
+  auto values = vtkSmartPointer<vtkFloatArray>::New();
+  for (float x : v) values->InsertNextValue(x);
+  image->GetPointData()->SetScalars(values);
+  auto writer = vtkSmartPointer<vtkNIFTIImageWriter>::New();
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(image);
+  writer->Write();
+}
+}  // namespace
+
+TEST_CASE(
+    "render --volume FILE --iso X: a scan in NRRD, MetaImage or NIfTI becomes the object, its "
+    "isosurface in the scan's millimetres; bad thresholds exit 2 with the range") {
+  lucent::test::TempDir dir;
+  const std::string nrrd = dir / "ball.nrrd", mhd = dir / "ball.mhd", nii = dir / "ball.nii.gz";
+  writeBallNrrd(nrrd);
+  writeBallMetaImage(mhd, dir / "ball.raw");
+  writeBallNifti(nii);
+  // The isosurface at 50 is the sphere of radius 7.5 mm: its box diagonal 2 7.5 sqrt(3) = 25.98.
+  for (const std::string& scan : {nrrd, mhd, nii})
+    for (const char* method : {"voxel-single", "taulut"}) {
+      const std::string stats = dir / "s.json";
+      const Run r = lucentCli("render --volume " + scan + " --iso 50 --material Skin1 --method " +
+                                  method + " --width 16 --height 16 --quiet --out " +
+                                  dir / "v.png" + " --stats " + stats,
+                              dir);
+      INFO(scan << " " << method << ": " << r.err);
+      REQUIRE(r.code == 0);
+      const std::string json = slurp(stats);
+      const auto at = json.find("\"size_mm\": ");
+      REQUIRE(at != std::string::npos);
+      CHECK(std::stod(json.substr(at + 11)) == doctest::Approx(25.98).epsilon(0.04));
+      CHECK(contains(r.err, "normalised to [0, 1]"));
+    }
+  const Run high = lucentCli("render --volume " + nrrd + " --iso 5000 --out " + dir / "x.png", dir);
+  CHECK(high.code == 2);
+  CHECK(contains(high.err, "selects no voxel (the values span [0.000000, 7"));
+  const Run none = lucentCli("render --volume " + nrrd + " --out " + dir / "x.png", dir);
+  CHECK(none.code == 2);
+  CHECK(contains(none.err, "give --iso X"));
+  const Run both =
+      lucentCli("render --volume " + nrrd + " --shape sphere --iso 50 --out " + dir / "x.png", dir);
+  CHECK(both.code == 2);
+  CHECK(contains(both.err, "give one of --mesh, --shape and --volume"));
+  const Run array =
+      lucentCli("render --volume " + nrrd + ":bone --iso 50 --out " + dir / "x.png", dir);
+  CHECK(array.code == 2);
+  CHECK(contains(array.err, "no point-data array 'bone'"));
+  CHECK_FALSE(std::filesystem::exists(dir / "x.png"));
 }

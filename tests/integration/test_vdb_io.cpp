@@ -19,13 +19,13 @@ namespace {
 scene::VoxelGrid ballDensity() {
   scene::VoxelGrid g;
   g.dims = {12, 10, 8};
-  g.voxelSize = 0.25;
+  g.spacing = glm::dvec3(0.25);
   g.origin = {-1.5, -1.25, -1.0};
   g.values.resize(std::size_t(12 * 10 * 8));
   for (int k = 0; k < 8; ++k)
     for (int j = 0; j < 10; ++j)
       for (int i = 0; i < 12; ++i) {
-        const glm::dvec3 p = g.origin + g.voxelSize * glm::dvec3(i, j, k);
+        const glm::dvec3 p = g.origin + g.spacing * glm::dvec3(i, j, k);
         g.values[g.index(i, j, k)] = float(std::max(0.0, 1.0 - glm::length(p)) + 0.01 * (i + 1));
       }
   return g;
@@ -50,7 +50,7 @@ TEST_CASE("A density written to OpenVDB reads back voxel for voxel, in millimetr
   CHECK(vdb::gridNames(dir / "ball.vdb") == std::vector<std::string>{"density"});
   const scene::VoxelGrid back = vdb::readFloatGrid(dir / "ball.vdb", "density");
   REQUIRE(back.dims == g.dims);  // every voxel is active: no column of the box is all background
-  CHECK(back.voxelSize == doctest::Approx(0.25));
+  CHECK(back.spacing.x == doctest::Approx(0.25));
   CHECK(glm::length(back.origin - g.origin) < 1e-9);
   for (std::size_t i = 0; i < g.values.size(); ++i) CHECK(back.values[i] == g.values[i]);
   // Trilinear sampling reproduces voxel values at centres and interpolates between them.

@@ -306,7 +306,7 @@ TEST_CASE("A scanned volume as the medium: sigma from a VoxelGrid, energy still 
   scene::VoxelGrid density;  // 2 x 1 x 1 voxels over the box: left half 1, right half 8 (denser)
   density.dims = {2, 1, 1};
   density.origin = {2.5, 3, 3};
-  density.voxelSize = 1.0;
+  density.spacing = glm::dvec3(1.0);
   density.values = {1.0f, 8.0f};
   const auto medium = quadgraph::sampleMedium(g, [&](const glm::dvec3& p) {
     const double d = density.sample(p);

@@ -19,7 +19,7 @@ inline constexpr double kMaxVoxels = 5e8;
 struct VoxelGrid {
   glm::ivec3 dims{0};
   glm::dvec3 origin{0};       ///< centre of voxel (0,0,0), mm
-  double voxelSize = 1;       ///< mm
+  glm::dvec3 spacing{1};      ///< voxel edge per axis, mm (scans are often anisotropic)
   std::vector<float> values;  ///< x fastest, then y, then z
 
   std::size_t index(int i, int j, int k) const {
@@ -32,7 +32,7 @@ struct VoxelGrid {
   /// (clamped).
   double sample(const glm::dvec3& p) const {
     if (values.empty()) return 0;
-    const glm::dvec3 u = glm::clamp((p - origin) / voxelSize, glm::dvec3(0), glm::dvec3(dims - 1));
+    const glm::dvec3 u = glm::clamp((p - origin) / spacing, glm::dvec3(0), glm::dvec3(dims - 1));
     const glm::ivec3 i0 = glm::min(glm::ivec3(u), glm::max(dims - 2, glm::ivec3(0)));
     const glm::ivec3 i1 = glm::min(i0 + 1, dims - 1);
     const glm::dvec3 t = u - glm::dvec3(i0);
