@@ -20,19 +20,23 @@
 #include "vtkLucentFilter.h"
 
 namespace {
-// Jensen et al. 2001, Eq. 6 totalled over the plane (their total diffuse reflectance), typed in from the
-// paper: Rd = (alpha'/2) (1 + exp(-(4/3) A sqrt(3 (1 - alpha')))) exp(-sqrt(3 (1 - alpha'))).
+// Jensen et al. 2001, Eq. 6 totalled over the plane (their total diffuse reflectance), typed in
+// from the paper: Rd = (alpha'/2) (1 + exp(-(4/3) A sqrt(3 (1 - alpha')))) exp(-sqrt(3 (1 -
+// alpha'))).
 double totalDiffuseReflectance(double sigmaA, double sigmaSPrime, double eta) {
   const double alpha = sigmaSPrime / (sigmaA + sigmaSPrime);
-  const double fdr = -1.440 / (eta * eta) + 0.710 / eta + 0.668 + 0.0636 * eta, a = (1 + fdr) / (1 - fdr);
+  const double fdr = -1.440 / (eta * eta) + 0.710 / eta + 0.668 + 0.0636 * eta,
+               a = (1 + fdr) / (1 - fdr);
   const double s = std::sqrt(3 * (1 - alpha));
   return 0.5 * alpha * (1 + std::exp(-4.0 / 3.0 * a * s)) * std::exp(-s);
 }
 }  // namespace
 
-TEST_CASE("vtkLucentFilter: a lit slab's face matches the dipole's total diffuse reflectance; shadowed side dark; progress") {
-  // A 60 x 60 x 30 mm box of skin, lit from +z with irradiance 2: far from the edges, the top face is a
-  // half-space, where B = Ft(0) E Rd_total (Rd integrated over the plane).
+TEST_CASE(
+    "vtkLucentFilter: a lit slab's face matches the dipole's total diffuse reflectance; shadowed "
+    "side dark; progress") {
+  // A 60 x 60 x 30 mm box of skin, lit from +z with irradiance 2: far from the edges, the top face
+  // is a half-space, where B = Ft(0) E Rd_total (Rd integrated over the plane).
   vtkNew<vtkTessellatedBoxSource> box;
   box->SetBounds(-30, 30, -30, 30, -15, 15);
   box->SetLevel(24);
@@ -46,7 +50,8 @@ TEST_CASE("vtkLucentFilter: a lit slab's face matches the dipole's total diffuse
   int progressEvents = 0;
   vtkNew<vtkCallbackCommand> onProgress;
   onProgress->SetClientData(&progressEvents);
-  onProgress->SetCallback([](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
+  onProgress->SetCallback(
+      [](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
   filter->AddObserver(vtkCommand::ProgressEvent, onProgress);
   filter->Update();
 
@@ -70,7 +75,9 @@ TEST_CASE("vtkLucentFilter: a lit slab's face matches the dipole's total diffuse
       ++centre;
       for (int c = 0; c < 3; ++c) {
         INFO("channel " << c << " at " << p[0] << ", " << p[1]);
-        CHECK(b->GetComponent(i, c) == doctest::Approx(2 * ft0 * totalDiffuseReflectance(sigmaA[c], sigmaSPrime[c], eta)).epsilon(0.03));
+        CHECK(b->GetComponent(i, c) ==
+              doctest::Approx(2 * ft0 * totalDiffuseReflectance(sigmaA[c], sigmaSPrime[c], eta))
+                  .epsilon(0.03));
         topMean[c] += b->GetComponent(i, c);
       }
     }
@@ -81,12 +88,14 @@ TEST_CASE("vtkLucentFilter: a lit slab's face matches the dipole's total diffuse
   }
   REQUIRE(centre >= 4);
   CHECK(bottom >= 4);
-  // The shadowed face, 30 mm of skin away from any lit point, is dark: red (diffusion length 3.7 mm) passes
-  // about e^-8 of the light, blue nothing.
+  // The shadowed face, 30 mm of skin away from any lit point, is dark: red (diffusion length 3.7
+  // mm) passes about e^-8 of the light, blue nothing.
   for (int c = 0; c < 3; ++c) CHECK(bottomMax[c] < 1e-3 * topMean[c] / centre);
 }
 
-TEST_CASE("vtkLucentFilter: tiny, huge and eta-extreme inputs stay finite; bad input is an error, not a crash") {
+TEST_CASE(
+    "vtkLucentFilter: tiny, huge and eta-extreme inputs stay finite; bad input is an error, not a "
+    "crash") {
   vtkNew<vtkSphereSource> sphere;
   sphere->SetThetaResolution(24);
   sphere->SetPhiResolution(12);
@@ -123,9 +132,11 @@ TEST_CASE("vtkLucentFilter: tiny, huge and eta-extreme inputs stay finite; bad i
   CHECK(bad->GetOutput()->GetNumberOfPoints() == 0);
 }
 
-TEST_CASE("vtkLucentFilter: the TSIS technique matches the reference per vertex and converges in N") {
-  // A 20 mm skin sphere lit from the side: TSIS (atlas irradiance, mip-ICDF samples, Eq. 10) against
-  // the dense dipole sum, vertex by vertex (relative RMS over the vertices, as docs/ reports errors).
+TEST_CASE(
+    "vtkLucentFilter: the TSIS technique matches the reference per vertex and converges in N") {
+  // A 20 mm skin sphere lit from the side: TSIS (atlas irradiance, mip-ICDF samples, Eq. 10)
+  // against the dense dipole sum, vertex by vertex (relative RMS over the vertices, as docs/
+  // reports errors).
   vtkNew<vtkSphereSource> sphere;
   sphere->SetRadius(10);
   sphere->SetThetaResolution(48);
@@ -160,7 +171,8 @@ TEST_CASE("vtkLucentFilter: the TSIS technique matches the reference per vertex 
         r2 += reference[i] * reference[i];
       }
       error[k][c] = std::sqrt(d2 / r2);
-      MESSAGE("TSIS N = " << counts[k] << ", channel " << c << ": relative RMS against the reference " << error[k][c]);
+      MESSAGE("TSIS N = " << counts[k] << ", channel " << c
+                          << ": relative RMS against the reference " << error[k][c]);
     }
   }
   for (int c = 0; c < 3; ++c) CHECK(error[1][c] < 0.05);
@@ -180,7 +192,8 @@ lucent::technique::Technique vertexConstant() {
   struct Constant final : lt::Prepared {
     double level;
     explicit Constant(double v) : level(v) {}
-    lt::FrameResult frame(const lt::SceneDescription&, const lt::ShadeRequest& r, lt::Statistics&) override {
+    lt::FrameResult frame(const lt::SceneDescription&, const lt::ShadeRequest& r,
+                          lt::Statistics&) override {
       lt::FrameResult out;
       out.radiance.assign(r.points.size(), glm::dvec3(level));
       return out;
@@ -193,7 +206,9 @@ lucent::technique::Technique vertexConstant() {
 }
 }  // namespace
 
-TEST_CASE("vtkLucentFilter: a technique registered by a test alone is offered, with its knob as a property") {
+TEST_CASE(
+    "vtkLucentFilter: a technique registered by a test alone is offered, with its knob as a "
+    "property") {
   auto& registry = vtkLucentFilter::Techniques();
   if (!registry.find("test-vertex-constant")) registry.add(vertexConstant());
   std::vector<std::string> techniques, properties;
@@ -221,7 +236,8 @@ TEST_CASE("vtkLucentFilter: a technique registered by a test alone is offered, w
   vtkDataArray* radiance = filter->GetOutput()->GetPointData()->GetArray("Radiance");
   REQUIRE(radiance != nullptr);
   REQUIRE(radiance->GetNumberOfTuples() > 10);
-  for (vtkIdType i = 0; i < radiance->GetNumberOfTuples(); ++i) CHECK(radiance->GetComponent(i, 1) == doctest::Approx(0.25));
+  for (vtkIdType i = 0; i < radiance->GetNumberOfTuples(); ++i)
+    CHECK(radiance->GetComponent(i, 1) == doctest::Approx(0.25));
   CHECK(filter->GetOutput()->GetPointData()->GetArray("Radiosity") == nullptr);  // it computes no B
 
   // A value outside the knob's own range is an error before any work, and the output stays empty.
@@ -229,4 +245,48 @@ TEST_CASE("vtkLucentFilter: a technique registered by a test alone is offered, w
   filter->GlobalWarningDisplayOff();
   filter->Update();
   CHECK(filter->GetOutput()->GetNumberOfPoints() == 0);
+}
+
+TEST_CASE(
+    "vtkLucentFilter: the voxel optical-thickness LUT per vertex — a lit face gives back the "
+    "light it takes in (Eq. 1-3's kernel normalised), the far face what passes through") {
+  // A 40 x 40 x 10 mm box of skin, lit from +z with irradiance 2: on the top face, far from the
+  // edges, B = Ft(0) E (the kernel (sigma_t^2 / 2 pi) e^{-sigma_t r} integrates to 1); on the
+  // bottom face B = Ft(0) E (1 + sigma_t d) e^{-sigma_t d} through d = 10 mm
+  // (tau_lut_radiance.hpp).
+  vtkNew<vtkTessellatedBoxSource> box;
+  box->SetBounds(-20, 20, -20, 20, -5, 5);
+  box->SetLevel(40);
+  box->QuadsOn();
+  vtkNew<vtkLucentFilter> filter;
+  filter->SetInputConnection(box->GetOutputPort());
+  filter->SetMaterial("skin1");
+  filter->SetTechnique("taulut");
+  filter->SetKnob("taulut.voxels", "40");
+  filter->SetKnob("taulut.rings", "40");
+  filter->SetKnob("taulut.map", "1024");
+  filter->SetLightDirection(0, 0, 1);
+  filter->SetLightIrradiance(2.0);
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput();
+  vtkDataArray* b = out->GetPointData()->GetArray("Radiosity");
+  REQUIRE(b != nullptr);
+  const double eta = 1.3, ft0 = 1 - std::pow((eta - 1) / (eta + 1), 2);
+  const double sigmaT[3] = {0.032 + 0.74, 0.17 + 0.88, 0.48 + 1.01};
+  int top = 0, bottom = 0;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i) {
+    double p[3];
+    out->GetPoint(i, p);
+    if (std::hypot(p[0], p[1]) > 8) continue;
+    const bool isTop = std::abs(p[2] - 5) < 1e-9, isBottom = std::abs(p[2] + 5) < 1e-9;
+    top += isTop, bottom += isBottom;
+    for (int c = 0; c < 3; ++c) {
+      INFO("channel " << c << " at " << p[0] << ", " << p[1] << ", " << p[2]);
+      if (isTop) CHECK(b->GetComponent(i, c) == doctest::Approx(2 * ft0).epsilon(0.04));
+      const double through = 2 * ft0 * (1 + sigmaT[c] * 10) * std::exp(-sigmaT[c] * 10);
+      if (isBottom) CHECK(b->GetComponent(i, c) == doctest::Approx(through).epsilon(0.1));
+    }
+  }
+  CHECK(top > 20);
+  CHECK(bottom > 20);
 }
