@@ -195,15 +195,28 @@ scene::TriangleMesh placedLikeObject(scene::TriangleMesh body, const glm::dvec3&
   return body;
 }
 
-/// Every vertex of the body inside the object, or a clear error.
-void requireInside(const Args& args, const Scene& s, const technique::Inclusion& inc,
-                   const std::string& option) {
+/// Every vertex of the body inside the object, and no vertex of the object (its cavities' walls
+/// included) or of an earlier body inside it: nested media must not overlap or enclose a cavity.
+void requireInside(const Args& args, const Scene& s, std::size_t which, const std::string& option) {
+  const technique::Inclusion& inc = s.inclusions[which];
   const double epsilon = 1e-5 * s.mesh.bounds().diagonal();
   for (const auto& p : inc.surface.positions)
     if (!inside(*s.caster, glm::dvec3(p), epsilon))
       args.fail(option + ": " + inc.description +
                 " is not inside the object; give a mesh in the object's own coordinates that "
                 "lies within it");
+  auto enclosesAny = [&](const scene::TriangleMesh& m) {
+    return std::any_of(m.positions.begin(), m.positions.end(),
+                       [&](const glm::vec3& p) { return inc.contains(glm::dvec3(p)); });
+  };
+  if (enclosesAny(s.mesh))
+    args.fail(option + ": " + inc.description +
+              " encloses part of the object's surface (a cavity or a wall); an inner body must lie "
+              "in the material, apart from cavities");
+  for (std::size_t k = 0; k < which; ++k)
+    if (enclosesAny(s.inclusions[k].surface))
+      args.fail(option + ": " + inc.description + " overlaps " + s.inclusions[k].description +
+                "; inner bodies must not overlap");
 }
 
 /// "--inclusion-mesh FILE:MATERIAL": a closed mesh in the object mesh's coordinates.
@@ -217,7 +230,12 @@ technique::Inclusion parseInclusionMesh(const Args& args, const std::string& tex
   if (!material)
     args.fail("--inclusion-mesh " + text + ": '" + name +
               "' is not a material; `lucent materials` lists them");
-  scene::TriangleMesh mesh = io::readMesh(file);
+  scene::TriangleMesh mesh;
+  try {
+    mesh = io::readMesh(file);
+  } catch (const InputError& e) {
+    args.fail("--inclusion-mesh: " + std::string(e.what()));
+  }
   const scene::MeshReport report = scene::checkMesh(mesh);
   if (!report.ok())
     args.fail("--inclusion-mesh " + file + ": the mesh does not bound a volume (" +
@@ -402,8 +420,12 @@ Scene buildScene(const Args& args) {
   if (args.has("inclusion")) s.inclusions.push_back(parseInclusion(args, args.get("inclusion"), s));
   for (const auto& text : inclusionMeshes)
     s.inclusions.push_back(parseInclusionMesh(args, text, unscaledCentre, scale));
+  if (args.has("mesh") && args.has("fill"))
+    args.fail(
+        "--fill fills a built-in shape's inner body (the bottle's); with --mesh give the "
+        "body as --inclusion-mesh FILE:MATERIAL");
   if (!args.has("mesh")) addInnerBodies(args, s, s.meshName, unscaledCentre, scale);
-  for (const auto& inc : s.inclusions) requireInside(args, s, inc, "inclusion");
+  for (std::size_t i = 0; i < s.inclusions.size(); ++i) requireInside(args, s, i, "inclusion");
   return s;
 }
 

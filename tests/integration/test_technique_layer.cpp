@@ -292,6 +292,17 @@ TEST_CASE(
   r = run({"--shape", "sphere", "--inclusion-mesh", core + ":Ketchup"});
   CHECK(r.code == 2);
   CHECK(contains(r.err, "--inclusion-mesh needs --mesh"));
+  writeObj(dir / "big.obj", scene::shapes::sphere(6.0, 3));
+  r = run({"--mesh", body, "--inclusion-mesh", core + ":Ketchup", "--inclusion-mesh",
+           dir / "big.obj" + ":Marble"});
+  CHECK(r.code == 2);
+  CHECK(contains(r.err, "overlaps Ketchup body"));
+  r = run({"--mesh", body, "--inclusion-mesh", dir / "missing.obj" + ":Ketchup"});
+  CHECK(r.code == 2);
+  CHECK(contains(r.err, "--inclusion-mesh: "));
+  r = run({"--mesh", body, "--fill", "Merlot"});
+  CHECK(r.code == 2);
+  CHECK(contains(r.err, "give the body as --inclusion-mesh"));
   r = run({"--shape", "sphere", "--fill", "Merlot"});
   CHECK(r.code == 2);
   CHECK(contains(r.err, "has no inner body"));

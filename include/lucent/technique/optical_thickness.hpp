@@ -63,20 +63,25 @@ class TauLut final : public Prepared {
         mSurface(stats.timePrepare("surface_voxels", [&] { return voxel::surfaceVoxels(mGrid); })),
         mPaths(buildPaths(scene, knobs, stats)),
         mLookup(mPaths.grid(), mSurface) {
-    stats.figures["grid_voxels"] = double(mGrid.voxelCount());
+    stats.figures["grid_voxels"] = double(mPaths.grid().voxelCount());
     stats.figures["surface_voxels"] = double(mSurface.count());
     stats.figures["table_endpoints"] = double(mPaths.tableEndpoints());
     stats.figures["table_bytes"] = double(mPaths.tableBytes());
-    stats.bytes = double(mPaths.tableBytes() + mGrid.voxelCount() * (1 + 4));
+    stats.bytes = double(mPaths.tableBytes() + mPaths.grid().voxelCount() * (1 + 4 + 4));
   }
 
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
-    std::vector<atlas::TranslucentShadowMap> maps = lightViews(scene, stats);
     const std::vector<glm::dvec3> sigmaT = extinctionOf(scene);
+    if (sigmaT.size() != std::size_t(mPaths.media()))
+      throw RequestError("taulut: the scene's inclusions changed since prepare (" +
+                         std::to_string(sigmaT.size() - 1) + " now, " +
+                         std::to_string(mPaths.media() - 1) + " then); prepare again");
+    mLookup.resetFarPoints();
+    std::vector<atlas::TranslucentShadowMap> maps = lightViews(scene, stats);
     const voxel::TauLutRadiance model = stats.timeFrame("voxel_number_maps", [&] {
       voxel::TauLutRadiance m(std::move(maps), mPaths, mLookup, sigmaT, taps(),
-                              scene.mesh.bounds().diagonal());
+                              scene.mesh.bounds().diagonal(), scene.parallelFor);
       m.setRotatedPattern(mKnobs.pick<bool>("pattern", {{"rotated", true}, {"fixed", false}}));
       return m;
     });
@@ -97,15 +102,16 @@ class TauLut final : public Prepared {
  private:
   int taps() const { return 1 + voxel::kTapsPerRing * int(mKnobs.integer("rings")); }
 
+  /// The paths between surface voxels; the grid moves into them (mGrid is empty afterwards).
   voxel::SurfacePaths buildPaths(const SceneDescription& scene, const KnobValues& knobs,
-                                 Statistics& stats) const {
+                                 Statistics& stats) {
     if (mSurface.count() == 0)
       throw RequestError("taulut: no voxel centre lies inside mesh " + scene.meshName + " at " +
                          std::to_string(knobs.integer("voxels")) +
                          " voxels along its longest side; raise voxels");
     return stats.timePrepare("optical_thickness", [&] {
       try {
-        return voxel::SurfacePaths(mGrid, mSurface, 1 + int(scene.inclusions.size()),
+        return voxel::SurfacePaths(std::move(mGrid), mSurface, 1 + int(scene.inclusions.size()),
                                    surfacePathOptions(knobs), scene.parallelFor,
                                    scene.stage("optical-thickness table"));
       } catch (const voxel::TableTooLarge& e) {
@@ -133,7 +139,7 @@ class TauLut final : public Prepared {
   }
 
   KnobValues mKnobs;
-  voxel::MediaGrid mGrid;
+  voxel::MediaGrid mGrid;  ///< until buildPaths moves it into mPaths
   voxel::SurfaceVoxels mSurface;
   voxel::SurfacePaths mPaths;
   voxel::SurfaceVoxelLookup mLookup;

@@ -14,10 +14,22 @@ namespace lucent::technique::detail {
 /// The scene as media: the object is medium 1, inclusion i is medium 2 + i (filled after the
 /// object, so it wins), a cavity (the mesh's inward shells) is none; density fields sampled at the
 /// voxel centres.
+/// The most voxels a voxel technique's grid may hold: with its surface numbering (4 bytes), density
+/// (4) and nearest-surface map (4), 13 bytes each, 1.3 GB. Checked before allocating.
+inline constexpr double kMaxGridVoxels = 1e8;
+
 inline voxel::MediaGrid mediaGridOf(const SceneDescription& scene, int voxelsAlongLongest) {
   if (scene.inclusions.size() > 254)
     throw RequestError(
         "the voxel techniques take at most 254 inclusions (the grid stores a byte per voxel)");
+  const glm::ivec3 dims = voxel::gridDimsAround(scene.mesh, voxelsAlongLongest);
+  const double count = double(dims.x) * double(dims.y) * double(dims.z);
+  if (count > kMaxGridVoxels)
+    throw RequestError("voxels=" + std::to_string(voxelsAlongLongest) + " makes a grid of " +
+                       std::to_string(dims.x) + " x " + std::to_string(dims.y) + " x " +
+                       std::to_string(dims.z) + " voxels, more than the " +
+                       std::to_string(int(kMaxGridVoxels / 1e6)) +
+                       " million the voxel techniques hold; lower voxels");
   voxel::MediaGrid grid = voxel::gridAround(scene.mesh, voxelsAlongLongest);
   voxel::fillInside(grid, scene.mesh, 1);
   for (std::size_t i = 0; i < scene.inclusions.size(); ++i)

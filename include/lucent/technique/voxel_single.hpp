@@ -33,15 +33,19 @@ inline std::vector<voxel::ScatteringCoefficients> scatteringOf(const SceneDescri
 class VoxelSingle final : public Prepared {
  public:
   VoxelSingle(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats)
-      : mKnobs(knobs), mGrid(stats.timePrepare("voxelize", [&] {
-          return mediaGridOf(scene, int(knobs.integer("voxels")));
-        })) {
+      : mKnobs(knobs),
+        mMedia(1 + scene.inclusions.size()),
+        mGrid(stats.timePrepare("voxelize",
+                                [&] { return mediaGridOf(scene, int(knobs.integer("voxels"))); })) {
     stats.figures["grid_voxels"] = double(mGrid.voxelCount());
     stats.bytes = double(mGrid.voxelCount() * (1 + 4));
   }
 
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
+    if (1 + scene.inclusions.size() != mMedia)
+      throw RequestError(
+          "voxel-single: the scene's inclusions changed since prepare; prepare again");
     const double g = mKnobs.real("g");
     const voxel::SingleScatteringEstimator estimator(
         mGrid, scatteringOf(scene, g), scene.lights, scene.mesh, *scene.caster,
@@ -71,6 +75,7 @@ class VoxelSingle final : public Prepared {
 
  private:
   KnobValues mKnobs;
+  std::size_t mMedia;  ///< media the grid was voxelised with
   voxel::MediaGrid mGrid;
 };
 

@@ -43,9 +43,10 @@ inline constexpr double kHalfMax = 65504.0;
 
 class PathLengthTable {
  public:
-  /// The memory a table of `points` endpoints and `media` media takes, before building it.
-  static std::size_t bytesFor(std::size_t points, int media, Precision p) {
-    return packedPairs(points) * std::size_t(media) * bytesPerValue(p);
+  /// The memory a table of `points` endpoints and `media` media takes, before building it (in
+  /// double: the count of a refused table may not fit 64 bits).
+  static double bytesFor(std::size_t points, int media, Precision p) {
+    return 0.5 * double(points) * (double(points) + 1) * media * double(bytesPerValue(p));
   }
 
   /// Walks every pair of `points` through `grid`; media 1..media are stored (0, none, is not).

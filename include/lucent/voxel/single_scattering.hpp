@@ -1,7 +1,7 @@
 #pragma once
 /// @file single_scattering.hpp
 /// @brief Single scattering through the voxel media, physically normalised: the radiance
-///   L(x_o, w_o) = Ft(eta, w_o) int_0^inf sigma_s(x_t) p(w_l . w_t') e^{-tau_view(t)}
+///   L(x_o, w_o) = Ft(eta, w_o) / eta^2 int_0^inf sigma_s(x_t) p(w_l . w_t') e^{-tau_view(t)}
 ///                 sum_lights E_l Ft(eta, w_l . n_l) e^{-tau_light(x_t)} dt
 /// along the refracted view ray x_t = x_o + t w_t (w_t' = -w_t the direction the light leaves in),
 /// with tau to the light by the same exact DDA over the same MediaGrid as the optical-thickness
@@ -102,7 +102,9 @@ class SingleScatteringEstimator {
     const std::vector<RaySegment> segments = mediaAlong(mGrid, mMedia, xo, inward, mReach);
     glm::dvec3 l(0);
     for (int c = 0; c < 3; ++c) l[c] = channel(segments, xo, inward, c);
-    return l * optics::fresnelTransmittance(cosOut, mEta);
+    // Radiance leaving a medium of index eta falls by 1/eta^2 (its solid angle widens), as the path
+    // tracer's camera rays carry it (dielectric_interface.hpp).
+    return l * (optics::fresnelTransmittance(cosOut, mEta) / (mEta * mEta));
   }
 
  private:

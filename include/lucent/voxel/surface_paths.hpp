@@ -54,12 +54,13 @@ class SurfacePaths {
     if (options.storage == Storage::March) return;
     std::vector<glm::dvec3> ends = mCentres;
     if (options.storage == Storage::Hierarchical) ends = cluster(surface);
-    const std::size_t bytes = PathLengthTable::bytesFor(ends.size(), media, options.precision);
-    if (bytes > options.maxTableBytes)
-      throw TableTooLarge("the optical-thickness table would take " + std::to_string(bytes >> 20) +
-                          " MiB (" + std::to_string(ends.size()) + " endpoints, " +
-                          std::to_string(media) + " media), over the " +
-                          std::to_string(options.maxTableBytes >> 20) + " MiB bound");
+    const double bytes = PathLengthTable::bytesFor(ends.size(), media, options.precision);
+    if (bytes > double(options.maxTableBytes))
+      throw TableTooLarge("the optical-thickness table would take " +
+                          std::to_string(std::llround(bytes / (1 << 20))) + " MiB (" +
+                          std::to_string(ends.size()) + " endpoints, " + std::to_string(media) +
+                          " media), over the " + std::to_string(options.maxTableBytes >> 20) +
+                          " MiB bound");
     mTable.emplace(mGrid, std::move(ends), media, options.precision, parallelFor, progress);
   }
 

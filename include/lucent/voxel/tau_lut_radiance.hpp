@@ -28,11 +28,14 @@
 ///    case is exact and e^{-tau} replaces the kernel wherever the media make it differ.
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "../atlas/ring_filter.hpp"
 #include "../atlas/translucent_shadow_map.hpp"
+#include "../util/parallel.hpp"
 #include "surface_paths.hpp"
 #include "surface_voxel_lookup.hpp"
 
@@ -52,16 +55,22 @@ class TauLutRadiance {
   /// @param sigmaT per medium 1..M (index 0 is medium 1, the object's), mm^-1.
   TauLutRadiance(std::vector<atlas::TranslucentShadowMap> maps, const SurfacePaths& paths,
                  const SurfaceVoxelLookup& lookup, std::vector<glm::dvec3> sigmaT, int taps,
-                 double domain)
+                 double domain, const util::ParallelFor& parallelFor = util::serialFor)
       : mMaps(std::move(maps)),
         mPaths(paths),
         mLookup(lookup),
         mSigmaT(std::move(sigmaT)),
         mFilter(tapFilter(mSigmaT.front(), taps, domain)) {
+    if (mSigmaT.size() != std::size_t(mPaths.media()))
+      throw std::invalid_argument("the scene has " + std::to_string(mSigmaT.size()) +
+                                  " media, the optical-thickness table " +
+                                  std::to_string(mPaths.media()) + ": prepare again");
     for (const auto& map : mMaps) {
       std::vector<std::int32_t> numbers(map.texelCount(), -1);
-      for (std::size_t i = 0; i < numbers.size(); ++i)
-        if (map.covered(i)) numbers[i] = mLookup.numberOf(map.position(i));
+      parallelFor(numbers.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+          if (map.covered(i)) numbers[i] = mLookup.numberOf(map.position(i));
+      });
       mNumberMaps.push_back(std::move(numbers));
     }
   }

@@ -107,15 +107,29 @@ inline void fillInside(MediaGrid& grid, const scene::TriangleMesh& mesh, std::ui
     }
 }
 
+/// The voxel edge and the voxels inside the box of a grid fitted around `mesh` (gridAround).
+inline double gridVoxelEdge(const scene::TriangleMesh& mesh, int voxelsAlongLongest) {
+  const scene::Bounds box = mesh.bounds();
+  const glm::dvec3 extent = box.hi - box.lo;
+  const double longest = std::max({extent.x, extent.y, extent.z});
+  return longest > 0 ? longest / std::max(1, voxelsAlongLongest) : 1.0;
+}
+
+/// The dimensions gridAround gives, computed without allocating (so they can be bounded first).
+inline glm::ivec3 gridDimsAround(const scene::TriangleMesh& mesh, int voxelsAlongLongest) {
+  const scene::Bounds box = mesh.bounds();
+  const double h = gridVoxelEdge(mesh, voxelsAlongLongest);
+  return glm::max(glm::ivec3(glm::ceil((box.hi - box.lo) / h)), glm::ivec3(1)) + 2;
+}
+
 /// A grid fitted around a mesh's bounding box with `voxelsAlongLongest` voxels on its longest side
 /// (cubic voxels) and one empty voxel of margin all round, so the outside touches every side.
 inline MediaGrid gridAround(const scene::TriangleMesh& mesh, int voxelsAlongLongest) {
   const scene::Bounds box = mesh.bounds();
   const glm::dvec3 extent = box.hi - box.lo;
-  const double longest = std::max({extent.x, extent.y, extent.z});
-  const double h = longest > 0 ? longest / std::max(1, voxelsAlongLongest) : 1.0;
-  const glm::ivec3 inner = glm::max(glm::ivec3(glm::ceil(extent / h)), glm::ivec3(1));
-  return MediaGrid(inner + 2, box.lo - h - 0.5 * (glm::dvec3(inner) * h - extent), glm::dvec3(h));
+  const double h = gridVoxelEdge(mesh, voxelsAlongLongest);
+  const glm::ivec3 dims = gridDimsAround(mesh, voxelsAlongLongest);
+  return MediaGrid(dims, box.lo - h - 0.5 * (glm::dvec3(dims - 2) * h - extent), glm::dvec3(h));
 }
 
 }  // namespace lucent::voxel
