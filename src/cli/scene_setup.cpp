@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include <lucent/scene/mesh_check.hpp>
@@ -20,6 +21,7 @@
 #include "../util/error.hpp"
 #include "../util/tbb_parallel.hpp"
 #include "material_options.hpp"
+#include "transfer_function.hpp"
 
 namespace lucent::cli {
 
@@ -260,36 +262,52 @@ void addInnerBodies(const Args& args, Scene& s, const std::string& shape, const 
                                          material->name + " as " + body.description));
   }
 }
-/// "--volume FILE[:ARRAY] --iso X": the scan, and its isosurface at X as the object's surface.
-std::shared_ptr<const scene::VoxelGrid> readScan(const Args& args, Scene& s) {
+/// "--volume FILE[:ARRAY] [--transfer SPEC] --iso X": the scan, its medium, and its isosurface at X
+/// (or, for a label map, where the labels with a material end) as the object's surface.
+std::shared_ptr<const scene::VoxelGrid> readScan(const Args& args, Scene& s,
+                                                 std::optional<ScanMedium>& medium) {
   std::string path = args.get("volume"), array;
   const auto colon = path.rfind(':');
   if (!std::filesystem::exists(path) && colon != std::string::npos)
     array = path.substr(colon + 1), path = path.substr(0, colon);
   auto scan = std::make_shared<scene::VoxelGrid>(io::readImageVolume(path, array));
+  s.meshName = path;
+  if (args.has("transfer")) medium = parseTransfer("--transfer", args.get("transfer"), scan);
+  if (medium && medium->mask) {
+    s.mesh = io::scanIsosurface(*medium->mask, 0.5,
+                                "--volume " + path + " (its labels with a material)");
+    return scan;
+  }
   const auto [lo, hi] = std::minmax_element(scan->values.begin(), scan->values.end());
   if (!args.has("iso"))
     args.fail("--volume " + path +
               ": give --iso X, the value whose isosurface is the object's "
               "surface (the values span [" +
               std::to_string(*lo) + ", " + std::to_string(*hi) + "])");
-  const double iso = args.number("iso", 0, -1e30, 1e30);
-  s.meshName = path;
-  s.mesh = io::scanIsosurface(*scan, iso, "--volume " + path);
+  s.mesh = io::scanIsosurface(*scan, args.number("iso", 0, -1e30, 1e30), "--volume " + path);
   return scan;
 }
 
-/// The scan's values normalised to [0, 1] over their range scale the material (no transfer
-/// function given): the object was centred on `centre` and scaled by `scale`.
-void scanDensity(const scene::VoxelGrid& scan, const glm::dvec3& centre, double scale, Scene& s) {
-  const auto [lo, hi] = std::minmax_element(scan.values.begin(), scan.values.end());
+/// The scan's medium: the transfer function's coefficients, or (none given) its values normalised
+/// to [0, 1] over their range scaling the material. The object was centred on `centre` and scaled
+/// by `scale`.
+void scanMedium(std::shared_ptr<const scene::VoxelGrid> scan, const std::optional<ScanMedium>& tf,
+                const glm::dvec3& centre, double scale, Scene& s) {
+  if (tf) {
+    s.medium.coefficients = [field = tf->field, centre, scale](const glm::dvec3& p) {
+      return field(p / scale + centre);
+    };
+    s.medium.maxSigmaT = tf->maxSigmaT;
+    s.medium.densityDescription = s.meshName + " through a " + tf->description;
+    return;
+  }
+  const auto [lo, hi] = std::minmax_element(scan->values.begin(), scan->values.end());
   const double low = *lo, span = double(*hi) - double(*lo);
-  auto grid = std::make_shared<const scene::VoxelGrid>(scan);
-  s.medium.density = [grid, low, span, centre, scale](const glm::dvec3& p) {
-    return span > 0 ? std::clamp((grid->sample(p / scale + centre) - low) / span, 0.0, 1.0) : 1.0;
+  s.medium.density = [scan, low, span, centre, scale](const glm::dvec3& p) {
+    return span > 0 ? std::clamp((scan->sample(p / scale + centre) - low) / span, 0.0, 1.0) : 1.0;
   };
-  s.medium.densityDescription = s.meshName + " (" + std::to_string(scan.dims.x) + "x" +
-                                std::to_string(scan.dims.y) + "x" + std::to_string(scan.dims.z) +
+  s.medium.densityDescription = s.meshName + " (" + std::to_string(scan->dims.x) + "x" +
+                                std::to_string(scan->dims.y) + "x" + std::to_string(scan->dims.z) +
                                 " voxels, values over [" + std::to_string(low) + ", " +
                                 std::to_string(low + span) + "] normalised to [0, 1])";
 }
@@ -323,8 +341,11 @@ std::vector<OptionSpec> sceneOptionSpecs() {
        "its "
        "isosurface at --iso is the surface, its values normalised to [0, 1] scale --material"},
       {"iso", "X", "the scan value whose isosurface bounds the object (with --volume)"},
+      {"transfer", "SPEC",
+       "the scan's values as coefficients: labels:V=MATERIAL,...,V=none (a label map; no --iso) or "
+       "points:V/SA_R,SA_G,SA_B/SS_R,SS_G,SS_B;... (piecewise linear, mm^-1)"},
       {"inclusion-mesh", "FILE:MATERIAL",
-       "a closed body of another material, in the object mesh's coordinates (repeatable)"},
+       "a closed body of another material, in the object mesh's coordinates (repeatable)", true},
       {"fill", "MATERIAL|none",
        "the material of a built-in shape's inner body (bottle: default Merlot; none: the "
        "object's own)"},
@@ -338,10 +359,13 @@ Scene buildScene(const Args& args) {
   if (int(args.has("mesh")) + int(args.has("shape")) + int(args.has("volume")) > 1)
     args.fail("give one of --mesh, --shape and --volume");
   std::shared_ptr<const scene::VoxelGrid> scan;
+  std::optional<ScanMedium> transfer;
+  if (args.has("transfer") && !args.has("volume"))
+    args.fail("--transfer maps a scan's values: give it with --volume");
   if (args.has("volume")) {
     if (args.has("density"))
       args.fail("--volume brings its own density (the scan's values); drop --density");
-    scan = readScan(args, s);
+    scan = readScan(args, s, transfer);
   } else if (args.has("mesh")) {
     s.meshName = args.get("mesh");
     s.mesh = io::readMesh(s.meshName);
@@ -416,7 +440,7 @@ Scene buildScene(const Args& args) {
     s.medium.density = field.at;
     s.medium.densityDescription = field.description;
   }
-  if (scan) scanDensity(*scan, unscaledCentre, scale, s);
+  if (scan) scanMedium(scan, transfer, unscaledCentre, scale, s);
   if (args.has("inclusion")) s.inclusions.push_back(parseInclusion(args, args.get("inclusion"), s));
   for (const auto& text : inclusionMeshes)
     s.inclusions.push_back(parseInclusionMesh(args, text, unscaledCentre, scale));

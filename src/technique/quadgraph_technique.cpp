@@ -45,7 +45,14 @@ render::MediumField mediumField(const SceneDescription& scene) {
     const Medium* m = &scene.medium;
     for (const auto& inc : scene.inclusions)
       if (inc.contains && inc.contains(p)) m = &inc.medium;
-    // A density of 0 leaves no medium; keep a trace so the diffusion coefficient stays finite.
+    // No medium (a density of 0, a zero coefficient) keeps a trace, so the diffusion coefficient
+    // stays finite.
+    if (m->coefficients) {
+      const Coefficients k = m->coefficients(p);
+      const double floor = 1e-6 * (m->material.sigmaA[c] + m->material.sigmaSPrime[c]);
+      return std::pair<double, double>{std::max(k.sigmaA[c], 0.0),
+                                       std::max(k.sigmaSPrime[c], floor)};
+    }
     const double scale = m->density ? std::max(m->density(p), 1e-6) : 1.0;
     return std::pair<double, double>{scale * m->material.sigmaA[c],
                                      scale * m->material.sigmaSPrime[c]};

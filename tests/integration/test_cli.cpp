@@ -750,3 +750,66 @@ TEST_CASE(
   CHECK(contains(array.err, "no point-data array 'bone'"));
   CHECK_FALSE(std::filesystem::exists(dir / "x.png"));
 }
+
+TEST_CASE(
+    "render --volume --transfer: a label map with a material per label (its surface from the "
+    "labels), a piecewise-linear transfer function; a label with no material, a negative "
+    "coefficient exit 2") {
+  lucent::test::TempDir dir;
+  // Labels: 0 outside, 1 a ball of radius 8 mm, 2 a core of radius 4 mm.
+  std::vector<float> labels;
+  for (int k = 0; k < 24; ++k)
+    for (int j = 0; j < 40; ++j)
+      for (int i = 0; i < 40; ++i) {
+        const double x = (i - 19.5) * 0.5, y = (j - 19.5) * 0.5, z = (k - 11.5) * 0.8;
+        const double r = std::sqrt(x * x + y * y + z * z);
+        labels.push_back(r < 4 ? 2.f : (r < 8 ? 1.f : 0.f));
+      }
+  const std::string seg = dir / "seg.nrrd";
+  {
+    std::ofstream f(seg, std::ios::binary);
+    f << "NRRD0004\ntype: float\ndimension: 3\nsizes: 40 40 24\nspacings: 0.5 0.5 0.8\n"
+         "encoding: raw\nendian: little\n\n";
+    f.write(reinterpret_cast<const char*>(labels.data()),
+            std::streamsize(labels.size() * sizeof(float)));
+  }
+  const std::string ball = dir / "ball.nrrd";
+  writeBallNrrd(ball);
+  for (const char* method : {"voxel-single", "taulut", "pathtrace"}) {
+    const Run r = lucentCli("render --volume " + seg +
+                                " --transfer labels:0=none,1=Skin1,2=Ketchup --method " + method +
+                                " --width 16 --height 16 --quiet --out " + dir / "l.png" +
+                                " --stats " + dir / "l.json",
+                            dir);
+    INFO(method << ": " << r.err);
+    CHECK(r.code == 0);
+    // The surface is the label-1 ball's: radius 8 (within a voxel), box diagonal about 27.7.
+    const std::string json = slurp(dir / "l.json");
+    const auto at = json.find("\"size_mm\": ");
+    REQUIRE(at != std::string::npos);
+    CHECK(std::stod(json.substr(at + 11)) == doctest::Approx(27.7).epsilon(0.05));
+  }
+  const Run ramp = lucentCli("render --volume " + ball +
+                                 " --iso 50 --transfer 'points:0/0.01,0.02,0.03/0.5,0.5,0.5;700/"
+                                 "0.1,0.2,0.3/2,2,2' --method voxel-single --width 16 --height 16 "
+                                 "--quiet --out " +
+                                 dir / "p.png",
+                             dir);
+  INFO(ramp.err);
+  CHECK(ramp.code == 0);
+  const Run missing = lucentCli(
+      "render --volume " + seg + " --transfer labels:0=none,1=Skin1 --out " + dir / "x.png", dir);
+  CHECK(missing.code == 2);
+  CHECK(contains(missing.err, "the scan has labels 2 with no material"));
+  const Run negative =
+      lucentCli("render --volume " + ball + " --iso 50 --transfer 'points:0/-1,0,0/1,1,1' --out " +
+                    dir / "x.png",
+                dir);
+  CHECK(negative.code == 2);
+  CHECK(contains(negative.err, "negative coefficient"));
+  const Run alone =
+      lucentCli("render --shape sphere --transfer labels:1=Skin1 --out " + dir / "x.png", dir);
+  CHECK(alone.code == 2);
+  CHECK(contains(alone.err, "give it with --volume"));
+  CHECK_FALSE(std::filesystem::exists(dir / "x.png"));
+}

@@ -255,10 +255,11 @@ class VolumePathTracer {
       const glm::dvec3 trLink = segmentTransmittance(x, medium, u, d, z.medium, rng, st);
       if (maxComponent(trLink) <= 0) continue;
       const glm::dvec3 trCamera = transmittance(m, pos, dir, t, rng, st.medium);
-      const double rho = m.homogeneous() ? 1.0 : detail::densityAt(m, x, st.medium);
+      const glm::dvec3 sigmaS =
+          m.homogeneous() ? m.sigmaS : detail::localCoefficients(m, x, st.medium).sigmaS;
       const double phases = optics::phaseHG(glm::dot(u, dir), m.g) *
                             optics::phaseHG(glm::dot(z.directionIn, -u), mScene.media[z.medium].g);
-      const glm::dvec3 link = trCamera * (rho * m.sigmaS) * trLink * (phases / (d2 * pdf));
+      const glm::dvec3 link = trCamera * sigmaS * trLink * (phases / (d2 * pdf));
       sum += HeroChannelWeight::joined(w, z.weight, link);
     }
     return sum;

@@ -1,10 +1,11 @@
 #pragma once
 /// @file volume_sampling.hpp
-/// @brief The medium primitives of the path tracers: Henyey-Greenstein direction sampling, free-flight
-/// sampling (closed form in a homogeneous medium, delta tracking in a heterogeneous one) and
-/// transmittance (closed form, or ratio tracking). Heterogeneous media use one scalar majorant
-/// sigma_bar = maxDensity * max_c sigma_t,c for all channels, so the majorant transmittances cancel in
-/// the hero-channel weights and only the real/null collision factors remain (Novak et al. 2014).
+/// @brief The medium primitives of the path tracers: Henyey-Greenstein direction sampling,
+/// free-flight sampling (closed form in a homogeneous medium, delta tracking in a heterogeneous
+/// one) and transmittance (closed form, or ratio tracking). Heterogeneous media use one scalar
+/// majorant sigma_bar = maxDensity * max_c sigma_t,c for all channels, so the majorant
+/// transmittances cancel in the hero-channel weights and only the real/null collision factors
+/// remain (Novak et al. 2014).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -21,8 +22,8 @@
 
 namespace lucent::reference {
 
-/// A new propagation direction after scattering from direction `d`; the HG pdf cancels the phase value,
-/// so the path weight is unchanged.
+/// A new propagation direction after scattering from direction `d`; the HG pdf cancels the phase
+/// value, so the path weight is unchanged.
 inline glm::dvec3 scatterHG(const glm::dvec3& d, double g, util::Rng& rng) {
   const double cosT = optics::sampleCosThetaHG(rng.uniform(), g);
   const double sinT = std::sqrt(std::max(0.0, 1 - cosT * cosT));
@@ -48,13 +49,44 @@ inline double densityAt(const Medium& m, const glm::dvec3& x, MediumSamplingStat
   }
   return std::max(0.0, d);
 }
+
+/// sigma_s and sigma_t at x of a heterogeneous medium: its field, or its constants times the
+/// density.
+struct LocalCoefficients {
+  glm::dvec3 sigmaS, sigmaT;
+};
+inline LocalCoefficients localCoefficients(const Medium& m, const glm::dvec3& x,
+                                           MediumSamplingStats& stats) {
+  if (m.coefficients) {
+    const auto [sigmaA, sigmaS] = m.coefficients(x);
+    LocalCoefficients c{glm::max(sigmaS, glm::dvec3(0)), glm::max(sigmaA + sigmaS, glm::dvec3(0))};
+    const double top = std::max(c.sigmaT.x, std::max(c.sigmaT.y, c.sigmaT.z));
+    if (!(top <= m.maxSigmaT)) {  // also catches NaN
+      ++stats.majorantViolations;
+      const double s = std::isfinite(top) && top > 0 ? m.maxSigmaT / top : 0.0;
+      c.sigmaS *= s, c.sigmaT *= s;
+    }
+    return c;
+  }
+  const double rho = densityAt(m, x, stats);
+  return {rho * m.sigmaS, rho * m.sigmaT()};
+}
+
+/// The scalar majorant of delta and ratio tracking.
+inline double majorant(const Medium& m) {
+  return m.coefficients
+             ? m.maxSigmaT
+             : m.maxDensity * std::max(m.sigmaT().x, std::max(m.sigmaT().y, m.sigmaT().z));
+}
 }  // namespace detail
 
-/// Samples where the next collision along (x, d) happens before `tBoundary`. Returns true and sets `t`
-/// for a real (scattering) collision, false when the flight reaches the boundary; `w` takes the factors
-/// of that event for every channel (its pdf for each would-be hero, its contribution per channel).
-inline bool sampleFlight(const Medium& m, const glm::dvec3& x, const glm::dvec3& d, double tBoundary, int hero,
-                         util::Rng& rng, HeroChannelWeight& w, double& t, MediumSamplingStats& stats) {
+/// Samples where the next collision along (x, d) happens before `tBoundary`. Returns true and sets
+/// `t` for a real (scattering) collision, false when the flight reaches the boundary; `w` takes the
+/// factors of that event for every channel (its pdf for each would-be hero, its contribution per
+/// channel).
+inline bool sampleFlight(const Medium& m, const glm::dvec3& x, const glm::dvec3& d,
+                         double tBoundary, int hero, util::Rng& rng, HeroChannelWeight& w,
+                         double& t, MediumSamplingStats& stats) {
   const glm::dvec3 sigmaT = m.sigmaT();
   if (m.homogeneous()) {
     const double sh = sigmaT[hero];
@@ -68,16 +100,16 @@ inline bool sampleFlight(const Medium& m, const glm::dvec3& x, const glm::dvec3&
     w.scale(m.sigmaS * tr, sigmaT * tr);
     return true;
   }
-  const double sigmaBar = m.maxDensity * maxComponent(sigmaT);
+  const double sigmaBar = detail::majorant(m);
   if (!(sigmaBar > 0)) return false;
   t = 0;
   for (;;) {
     t -= std::log(1 - rng.uniform()) / sigmaBar;
     if (t >= tBoundary) return false;  // the majorant transmittance is common to every channel
-    const double rho = detail::densityAt(m, x + t * d, stats);
-    const glm::dvec3 sigmaTx = rho * sigmaT;
+    const detail::LocalCoefficients local = detail::localCoefficients(m, x + t * d, stats);
+    const glm::dvec3 sigmaTx = local.sigmaT;
     if (rng.uniform() * sigmaBar < sigmaTx[hero]) {
-      w.scale(rho * m.sigmaS, sigmaTx);
+      w.scale(local.sigmaS, sigmaTx);
       return true;
     }
     const glm::dvec3 nullPart = glm::dvec3(sigmaBar) - sigmaTx;
@@ -87,17 +119,17 @@ inline bool sampleFlight(const Medium& m, const glm::dvec3& x, const glm::dvec3&
 
 /// Transmittance along a segment of length `length` inside one medium: exact when homogeneous, an
 /// unbiased ratio-tracking estimate otherwise.
-inline glm::dvec3 transmittance(const Medium& m, const glm::dvec3& x, const glm::dvec3& d, double length,
-                                util::Rng& rng, MediumSamplingStats& stats) {
+inline glm::dvec3 transmittance(const Medium& m, const glm::dvec3& x, const glm::dvec3& d,
+                                double length, util::Rng& rng, MediumSamplingStats& stats) {
   const glm::dvec3 sigmaT = m.sigmaT();
   if (m.homogeneous()) return glm::exp(-sigmaT * length);
-  const double sigmaBar = m.maxDensity * maxComponent(sigmaT);
+  const double sigmaBar = detail::majorant(m);
   glm::dvec3 tr(1);
   if (!(sigmaBar > 0)) return tr;
   for (double t = 0;;) {
     t -= std::log(1 - rng.uniform()) / sigmaBar;
     if (t >= length) return tr;
-    tr *= glm::dvec3(1) - detail::densityAt(m, x + t * d, stats) * sigmaT / sigmaBar;
+    tr *= glm::dvec3(1) - detail::localCoefficients(m, x + t * d, stats).sigmaT / sigmaBar;
     if (maxComponent(tr) < 1e-12) return glm::dvec3(0);  // negligible; stop walking
   }
 }

@@ -19,11 +19,12 @@ namespace lucent::technique {
 
 namespace detail {
 
-/// sigma_t = sigma_a + sigma_s' of media 1.. (the object's, then the inclusions'), at frame time.
-inline std::vector<glm::dvec3> extinctionOf(const SceneDescription& scene) {
-  auto sigmaT = [](const optics::Material& m) { return glm::dvec3(m.sigmaA + m.sigmaSPrime); };
-  std::vector<glm::dvec3> out{sigmaT(scene.medium.material)};
-  for (const auto& inc : scene.inclusions) out.push_back(sigmaT(inc.medium.material));
+/// sigma_t = sigma_a + sigma_s' of media 1.., at frame time.
+inline std::vector<glm::dvec3> extinctionOf(const SceneDescription& scene,
+                                            const std::vector<Coefficients>& fieldMedia) {
+  std::vector<glm::dvec3> out;
+  for (const auto& c : mediaCoefficients(scene, fieldMedia))
+    out.push_back(c.sigmaA + c.sigmaSPrime);
   return out;
 }
 
@@ -58,12 +59,18 @@ class TauLut final : public Prepared {
  public:
   TauLut(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats)
       : mKnobs(knobs),
-        mGrid(stats.timePrepare("voxelize",
-                                [&] { return mediaGridOf(scene, int(knobs.integer("voxels"))); })),
+        mMedia(stats.timePrepare("voxelize",
+                                 [&] { return mediaGridOf(scene, int(knobs.integer("voxels"))); })),
+        mGrid(std::move(mMedia.grid)),
         mSurface(stats.timePrepare("surface_voxels", [&] { return voxel::surfaceVoxels(mGrid); })),
         mPaths(buildPaths(scene, knobs, stats)),
         mLookup(mPaths.grid(), mSurface) {
     stats.figures["grid_voxels"] = double(mPaths.grid().voxelCount());
+    stats.figures["field_media"] = double(mMedia.fieldMedia.size());
+    if (mMedia.binned)
+      stats.warnings.push_back("taulut: the coefficient field has more distinct values than the " +
+                               std::to_string(mMedia.fieldMedia.size()) +
+                               " media a voxel's byte holds; binned by mean sigma_t");
     stats.figures["surface_voxels"] = double(mSurface.count());
     stats.figures["table_endpoints"] = double(mPaths.tableEndpoints());
     stats.figures["table_bytes"] = double(mPaths.tableBytes());
@@ -72,15 +79,19 @@ class TauLut final : public Prepared {
 
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
-    const std::vector<glm::dvec3> sigmaT = extinctionOf(scene);
+    const std::vector<glm::dvec3> sigmaT = extinctionOf(scene, mMedia.fieldMedia);
     if (sigmaT.size() != std::size_t(mPaths.media()))
-      throw RequestError("taulut: the scene's inclusions changed since prepare (" +
-                         std::to_string(sigmaT.size() - 1) + " now, " +
-                         std::to_string(mPaths.media() - 1) + " then); prepare again");
+      throw RequestError("taulut: the scene's media changed since prepare (" +
+                         std::to_string(sigmaT.size()) + " now, " + std::to_string(mPaths.media()) +
+                         " then); prepare again");
     mLookup.resetFarPoints();
     std::vector<atlas::TranslucentShadowMap> maps = lightViews(scene, stats);
     const voxel::TauLutRadiance model = stats.timeFrame("voxel_number_maps", [&] {
-      voxel::TauLutRadiance m(std::move(maps), mPaths, mLookup, sigmaT, taps(),
+      // Taps placed by the object's densest medium (at density 1): one filter for every point.
+      glm::dvec3 sigmaFilter(0);
+      for (int k = 0; k < mMedia.objectMedia(); ++k)
+        sigmaFilter = glm::max(sigmaFilter, sigmaT[std::size_t(k)]);
+      voxel::TauLutRadiance m(std::move(maps), mPaths, mLookup, sigmaT, sigmaFilter, taps(),
                               scene.mesh.bounds().diagonal(), scene.parallelFor);
       m.setRotatedPattern(mKnobs.pick<bool>("pattern", {{"rotated", true}, {"fixed", false}}));
       return m;
@@ -111,9 +122,9 @@ class TauLut final : public Prepared {
                          " voxels along its longest side; raise voxels");
     return stats.timePrepare("optical_thickness", [&] {
       try {
-        return voxel::SurfacePaths(std::move(mGrid), mSurface, 1 + int(scene.inclusions.size()),
-                                   surfacePathOptions(knobs), scene.parallelFor,
-                                   scene.stage("optical-thickness table"));
+        return voxel::SurfacePaths(
+            std::move(mGrid), mSurface, mMedia.objectMedia() + int(scene.inclusions.size()),
+            surfacePathOptions(knobs), scene.parallelFor, scene.stage("optical-thickness table"));
       } catch (const voxel::TableTooLarge& e) {
         throw RequestError("taulut: " + std::string(e.what()) +
                            "; use storage=hierarchical or storage=march, lower voxels, or raise "
@@ -139,6 +150,7 @@ class TauLut final : public Prepared {
   }
 
   KnobValues mKnobs;
+  VoxelMedia mMedia;       ///< its grid moves to mGrid, then into mPaths
   voxel::MediaGrid mGrid;  ///< until buildPaths moves it into mPaths
   voxel::SurfaceVoxels mSurface;
   voxel::SurfacePaths mPaths;

@@ -17,7 +17,15 @@ namespace detail {
 inline reference::Medium pathTracerMedium(const Medium& medium, double g, bool matched) {
   reference::Medium m = reference::mediumFromMaterial(medium.material, g);
   if (matched) m.eta = 1;
-  if (medium.density) {
+  if (medium.coefficients) {
+    // sigma_s = sigma_s' / (1 - g) as for the material; the majorant grows with it for g > 0.
+    m.coefficients = [field = medium.coefficients, g](const glm::dvec3& x) {
+      const Coefficients c = field(x);
+      return std::pair<glm::dvec3, glm::dvec3>{c.sigmaA, c.sigmaSPrime / (1 - g)};
+    };
+    const glm::dvec3 t = medium.maxSigmaT;
+    m.maxSigmaT = std::max(t.x, std::max(t.y, t.z)) * std::max(1.0, 1 / (1 - g));
+  } else if (medium.density) {
     m.density = medium.density;
     m.maxDensity = 1;
   }

@@ -26,12 +26,31 @@ namespace lucent::technique {
 /// material).
 using DensityField = std::function<double(const glm::dvec3&)>;
 
-/// A homogeneous material, optionally scaled by a density field (a scanned volume).
+/// Absorption and reduced scattering at a point, mm^-1 per channel.
+struct Coefficients {
+  glm::dvec3 sigmaA{0}, sigmaSPrime{0};
+  bool operator==(const Coefficients& o) const {
+    return sigmaA == o.sigmaA && sigmaSPrime == o.sigmaSPrime;
+  }
+};
+/// Coefficients over the object, mm coordinates: a scan through a transfer function or a label map.
+using CoefficientField = std::function<Coefficients(const glm::dvec3&)>;
+
+/// A homogeneous material, optionally scaled by a density field (a scanned volume), or replaced by
+/// a field of coefficients (the material then gives only eta and the name).
 struct Medium {
   optics::Material material;
   DensityField density;            ///< empty: homogeneous
   std::string densityDescription;  ///< where the field came from, for notes
-  bool heterogeneous() const { return bool(density); }
+  CoefficientField coefficients;   ///< when set, replaces material x density
+  glm::dvec3 maxSigmaT{0};  ///< with `coefficients`: sigma_a + sigma_s' never above, per channel
+  bool heterogeneous() const { return bool(density) || bool(coefficients); }
+  /// The coefficients at p.
+  Coefficients at(const glm::dvec3& p) const {
+    if (coefficients) return coefficients(p);
+    const double rho = density ? density(p) : 1.0;
+    return {glm::dvec3(material.sigmaA) * rho, glm::dvec3(material.sigmaSPrime) * rho};
+  }
 };
 
 /// A closed surface inside the object, filled with another medium (an inclusion; e.g. a tumour in

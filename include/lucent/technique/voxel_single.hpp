@@ -17,16 +17,15 @@ namespace lucent::technique {
 namespace detail {
 
 /// Unreduced coefficients of media 1.. at HG g: sigma_s = sigma_s' / (1 - g), as the path tracer.
-inline std::vector<voxel::ScatteringCoefficients> scatteringOf(const SceneDescription& scene,
-                                                               double g) {
-  auto of = [g](const optics::Material& m) {
+inline std::vector<voxel::ScatteringCoefficients> scatteringOf(
+    const SceneDescription& scene, const std::vector<Coefficients>& fieldMedia, double g) {
+  std::vector<voxel::ScatteringCoefficients> out;
+  for (const auto& m : mediaCoefficients(scene, fieldMedia)) {
     voxel::ScatteringCoefficients c;
-    c.sigmaS = glm::dvec3(m.sigmaSPrime) / (1 - g);
-    c.sigmaT = glm::dvec3(m.sigmaA) + c.sigmaS;
-    return c;
-  };
-  std::vector<voxel::ScatteringCoefficients> out{of(scene.medium.material)};
-  for (const auto& inc : scene.inclusions) out.push_back(of(inc.medium.material));
+    c.sigmaS = m.sigmaSPrime / (1 - g);
+    c.sigmaT = m.sigmaA + c.sigmaS;
+    out.push_back(c);
+  }
   return out;
 }
 
@@ -34,22 +33,29 @@ class VoxelSingle final : public Prepared {
  public:
   VoxelSingle(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats)
       : mKnobs(knobs),
-        mMedia(1 + scene.inclusions.size()),
-        mGrid(stats.timePrepare("voxelize",
-                                [&] { return mediaGridOf(scene, int(knobs.integer("voxels"))); })) {
-    stats.figures["grid_voxels"] = double(mGrid.voxelCount());
-    stats.bytes = double(mGrid.voxelCount() * (1 + 4));
+        mInclusions(scene.inclusions.size()),
+        mMedia(stats.timePrepare(
+            "voxelize", [&] { return mediaGridOf(scene, int(knobs.integer("voxels"))); })) {
+    stats.figures["grid_voxels"] = double(mMedia.grid.voxelCount());
+    stats.figures["field_media"] = double(mMedia.fieldMedia.size());
+    stats.bytes = double(mMedia.grid.voxelCount() * (1 + 4));
+    if (mMedia.binned)
+      stats.warnings.push_back(
+          "voxel-single: the coefficient field has more distinct values than "
+          "the " +
+          std::to_string(mMedia.fieldMedia.size()) +
+          " media a voxel's byte holds; binned by mean sigma_t");
   }
 
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
-    if (1 + scene.inclusions.size() != mMedia)
+    if (scene.inclusions.size() != mInclusions)
       throw RequestError(
           "voxel-single: the scene's inclusions changed since prepare; prepare again");
     const double g = mKnobs.real("g");
     const voxel::SingleScatteringEstimator estimator(
-        mGrid, scatteringOf(scene, g), scene.lights, scene.mesh, *scene.caster,
-        scene.medium.material.eta, g, int(mKnobs.integer("samples")));
+        mMedia.grid, scatteringOf(scene, mMedia.fieldMedia, g), scene.lights, scene.mesh,
+        *scene.caster, scene.medium.material.eta, g, int(mKnobs.integer("samples")));
     stats.samples = double(mKnobs.integer("samples"));
     stats.sampleUnit = "depths per channel";
     FrameResult out;
@@ -75,8 +81,8 @@ class VoxelSingle final : public Prepared {
 
  private:
   KnobValues mKnobs;
-  std::size_t mMedia;  ///< media the grid was voxelised with
-  voxel::MediaGrid mGrid;
+  std::size_t mInclusions;  ///< inclusions the grid was voxelised with
+  VoxelMedia mMedia;
 };
 
 }  // namespace detail

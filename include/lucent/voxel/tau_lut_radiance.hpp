@@ -23,9 +23,9 @@
 ///    their chord.
 ///  - The integral: the 21-tap filter of translucent shadow maps as a ring filter
 ///    (ring_filter.hpp): a centre tap and rings of 5 taps placed by the importance of the
-///    normalised kernel e^{-sigma r} 2 pi r of the object's medium, each tap weighted by its
-///    stratum's mass over the kernel at its radius (the ratio estimator), so the homogeneous flat
-///    case is exact and e^{-tau} replaces the kernel wherever the media make it differ.
+///    normalised kernel e^{-sigma r} 2 pi r of the object's densest medium, each tap weighted by
+///    its stratum's mass over the kernel at its radius (the ratio estimator), so the homogeneous
+///    flat case is exact and e^{-tau} replaces the kernel wherever the media make it differ.
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -52,15 +52,17 @@ inline atlas::RingFilter tapFilter(const glm::dvec3& sigmaRef, int taps, double 
 
 class TauLutRadiance {
  public:
-  /// @param sigmaT per medium 1..M (index 0 is medium 1, the object's), mm^-1.
+  /// @param sigmaT per medium 1..M, mm^-1; @param sigmaFilter the extinction whose kernel places
+  /// the taps (the object's densest).
   TauLutRadiance(std::vector<atlas::TranslucentShadowMap> maps, const SurfacePaths& paths,
-                 const SurfaceVoxelLookup& lookup, std::vector<glm::dvec3> sigmaT, int taps,
-                 double domain, const util::ParallelFor& parallelFor = util::serialFor)
+                 const SurfaceVoxelLookup& lookup, std::vector<glm::dvec3> sigmaT,
+                 const glm::dvec3& sigmaFilter, int taps, double domain,
+                 const util::ParallelFor& parallelFor = util::serialFor)
       : mMaps(std::move(maps)),
         mPaths(paths),
         mLookup(lookup),
         mSigmaT(std::move(sigmaT)),
-        mFilter(tapFilter(mSigmaT.front(), taps, domain)) {
+        mFilter(tapFilter(sigmaFilter, taps, domain)) {
     if (mSigmaT.size() != std::size_t(mPaths.media()))
       throw std::invalid_argument("the scene has " + std::to_string(mSigmaT.size()) +
                                   " media, the optical-thickness table " +
