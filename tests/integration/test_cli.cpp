@@ -789,6 +789,18 @@ TEST_CASE(
     REQUIRE(at != std::string::npos);
     CHECK(std::stod(json.substr(at + 11)) == doctest::Approx(27.7).epsilon(0.05));
   }
+#ifdef LUCENT_HAVE_TETGEN
+  // quadgraph samples the field at its nodes (it runs; its accuracy is
+  // docs/accuracy/quadgraph.md's).
+  const Run qg = lucentCli("render --volume " + seg +
+                               " --transfer labels:0=none,1=Skin1,2=Ketchup --method quadgraph "
+                               "--knob levels=1 --width 16 --height 16 --quiet --out " +
+                               dir / "q.png",
+                           dir);
+  INFO(qg.err);
+  CHECK(qg.code == 0);
+  CHECK(std::filesystem::exists(dir / "q.png"));
+#endif
   const Run ramp = lucentCli("render --volume " + ball +
                                  " --iso 50 --transfer 'points:0/0.01,0.02,0.03/0.5,0.5,0.5;700/"
                                  "0.1,0.2,0.3/2,2,2' --method voxel-single --width 16 --height 16 "

@@ -82,9 +82,19 @@ inline ImageErrors compareImages(const Image& test, const Image& reference, Tone
   e.rmseToneMapped =
       reference.pixels.empty() ? 0 : std::sqrt(sqTone / (3.0 * double(reference.pixels.size())));
   for (int c = 0; c < 3; ++c) e.meanRatio[c] = sumRef[c] > 0 ? sumTest[c] / sumRef[c] : 0.0;
-  double residual = 0;  // sum_c min_k sum (k a - b)^2 = sum b^2 - (sum ab)^2 / sum a^2
-  for (int c = 0; c < 3; ++c) residual += sumAA[c] > 0 ? -sumAB[c] * sumAB[c] / sumAA[c] : 0.0;
-  e.scaledRelativeRms = sqRef > 0 ? std::sqrt(std::max(0.0, (sqRef + residual) / sqRef)) : 0.0;
+  // Each channel scaled by k_c = sum(ab) / sum(a^2), the residual summed in a second pass (the
+  // closed form sum b^2 - (sum ab)^2 / sum a^2 cancels to rounding noise for a good fit).
+  double k[3];
+  for (int c = 0; c < 3; ++c) k[c] = sumAA[c] > 0 ? sumAB[c] / sumAA[c] : 0.0;
+  double residual = 0;
+  for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
+    if (!test.covered(i) && !reference.covered(i)) continue;
+    for (int c = 0; c < 3; ++c) {
+      const double d = k[c] * double(test.pixels[i][c]) - double(reference.pixels[i][c]);
+      residual += d * d;
+    }
+  }
+  e.scaledRelativeRms = sqRef > 0 ? std::sqrt(residual / sqRef) : 0.0;
   e.relativeRms = sqRef > 0 ? std::sqrt(sqDiff / sqRef)
                             : (sqDiff > 0 ? std::numeric_limits<double>::infinity() : 0.0);
   return e;
