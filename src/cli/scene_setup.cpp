@@ -278,12 +278,13 @@ std::shared_ptr<const scene::VoxelGrid> readScan(const Args& args, Scene& s,
                                 "--volume " + path + " (its labels with a material)");
     return scan;
   }
-  const auto [lo, hi] = std::minmax_element(scan->values.begin(), scan->values.end());
-  if (!args.has("iso"))
+  if (!args.has("iso")) {
+    const auto [lo, hi] = std::minmax_element(scan->values.begin(), scan->values.end());
     args.fail("--volume " + path +
               ": give --iso X, the value whose isosurface is the object's "
               "surface (the values span [" +
               std::to_string(*lo) + ", " + std::to_string(*hi) + "])");
+  }
   s.mesh = io::scanIsosurface(*scan, args.number("iso", 0, -1e30, 1e30), "--volume " + path);
   return scan;
 }

@@ -59,6 +59,19 @@ vtkImageData* readWith(Reader& reader, const std::string& path) {
   return reader.GetOutput();
 }
 
+/// Reads a file after checking the reader takes it; else InputError with the path and `refusal`.
+template <class Reader>
+vtkImageData* readFile(Reader& reader, const std::string& path, const std::string& refusal) {
+  if (!reader.CanReadFile(path.c_str())) throw InputError(path + refusal);
+  reader.SetFileName(path.c_str());
+  return readWith(reader, path);
+}
+
+std::string unreadable(const char* format) {
+  return std::string(": not a readable ") + format +
+         " file; check it in ParaView, or convert it to .vti there";
+}
+
 constexpr const char* kFormats =
     ".vti (VTK XML image data), .vtk (legacy structured points), .nrrd/.nhdr, .mha/.mhd "
     "(MetaImage), .nii/.nii.gz (NIfTI) or a folder of DICOM slices";
@@ -75,35 +88,21 @@ scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arr
   vtkNew<vtkNIFTIImageReader> nifti;
   vtkNew<vtkDICOMImageReader> dicom;
   double slope = 1, intercept = 0;  // NIfTI stores values to be rescaled
-  auto refuse = [&](const char* what) {
-    throw InputError(path + ": not a readable " + what +
-                     " file; check it in ParaView, or convert "
-                     "it to .vti there");
-  };
   if (folder) {
     dicom->SetDirectoryName(path.c_str());
     image = readWith(*dicom, path);
   } else if (endsWith(path, ".vti")) {
-    if (!xml->CanReadFile(path.c_str()))
-      throw InputError(path +
-                       ": not a VTK XML image-data file; save the volume from ParaView as .vti");
-    xml->SetFileName(path.c_str());
-    image = readWith(*xml, path);
+    image = readFile(*xml, path,
+                     ": not a VTK XML image-data file; save the volume from ParaView as .vti");
   } else if (endsWith(path, ".vtk")) {
     legacy->SetFileName(path.c_str());
     image = readWith(*legacy, path);
   } else if (endsWith(path, ".nrrd") || endsWith(path, ".nhdr")) {
-    if (!nrrd->CanReadFile(path.c_str())) refuse("NRRD");
-    nrrd->SetFileName(path.c_str());
-    image = readWith(*nrrd, path);
+    image = readFile(*nrrd, path, unreadable("NRRD"));
   } else if (endsWith(path, ".mha") || endsWith(path, ".mhd")) {
-    if (!meta->CanReadFile(path.c_str())) refuse("MetaImage");
-    meta->SetFileName(path.c_str());
-    image = readWith(*meta, path);
+    image = readFile(*meta, path, unreadable("MetaImage"));
   } else if (endsWith(path, ".nii") || endsWith(path, ".nii.gz")) {
-    if (!nifti->CanReadFile(path.c_str())) refuse("NIfTI");
-    nifti->SetFileName(path.c_str());
-    image = readWith(*nifti, path);
+    image = readFile(*nifti, path, unreadable("NIfTI"));
     slope = nifti->GetRescaleSlope() != 0 ? nifti->GetRescaleSlope() : 1.0;
     intercept = nifti->GetRescaleIntercept();
   } else {

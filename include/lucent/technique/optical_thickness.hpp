@@ -61,16 +61,11 @@ class TauLut final : public Prepared {
       : mKnobs(knobs),
         mMedia(stats.timePrepare("voxelize",
                                  [&] { return mediaGridOf(scene, int(knobs.integer("voxels"))); })),
-        mGrid(std::move(mMedia.grid)),
-        mSurface(stats.timePrepare("surface_voxels", [&] { return voxel::surfaceVoxels(mGrid); })),
+        mSurface(
+            stats.timePrepare("surface_voxels", [&] { return voxel::surfaceVoxels(mMedia.grid); })),
         mPaths(buildPaths(scene, knobs, stats)),
         mLookup(mPaths.grid(), mSurface) {
-    stats.figures["grid_voxels"] = double(mPaths.grid().voxelCount());
-    stats.figures["field_media"] = double(mMedia.fieldMedia.size());
-    if (mMedia.binned)
-      stats.warnings.push_back("taulut: the coefficient field has more distinct values than the " +
-                               std::to_string(mMedia.fieldMedia.size()) +
-                               " media a voxel's byte holds; binned by mean sigma_t");
+    reportMedia(mMedia, "taulut", mPaths.grid(), stats);
     stats.figures["surface_voxels"] = double(mSurface.count());
     stats.figures["table_endpoints"] = double(mPaths.tableEndpoints());
     stats.figures["table_bytes"] = double(mPaths.tableBytes());
@@ -85,7 +80,9 @@ class TauLut final : public Prepared {
                          std::to_string(sigmaT.size()) + " now, " + std::to_string(mPaths.media()) +
                          " then); prepare again");
     mLookup.resetFarPoints();
-    std::vector<atlas::TranslucentShadowMap> maps = lightViews(scene, stats);
+    // The irradiance map of Eq. 2 per light, with its first hits (the voxel-number map follows).
+    std::vector<atlas::TranslucentShadowMap> maps = lightViewMaps(
+        scene, irradianceSettings(scene), int(mKnobs.integer("map")), stats, "irradiance_maps");
     const voxel::TauLutRadiance model = stats.timeFrame("voxel_number_maps", [&] {
       // Taps placed by the object's densest medium (at density 1): one filter for every point.
       glm::dvec3 sigmaFilter(0);
@@ -113,7 +110,7 @@ class TauLut final : public Prepared {
  private:
   int taps() const { return 1 + voxel::kTapsPerRing * int(mKnobs.integer("rings")); }
 
-  /// The paths between surface voxels; the grid moves into them (mGrid is empty afterwards).
+  /// The paths between surface voxels; the grid moves into them (mMedia.grid is empty afterwards).
   voxel::SurfacePaths buildPaths(const SceneDescription& scene, const KnobValues& knobs,
                                  Statistics& stats) {
     if (mSurface.count() == 0)
@@ -123,7 +120,7 @@ class TauLut final : public Prepared {
     return stats.timePrepare("optical_thickness", [&] {
       try {
         return voxel::SurfacePaths(
-            std::move(mGrid), mSurface, mMedia.objectMedia() + int(scene.inclusions.size()),
+            std::move(mMedia.grid), mSurface, mMedia.objectMedia() + int(scene.inclusions.size()),
             surfacePathOptions(knobs), scene.parallelFor, scene.stage("optical-thickness table"));
       } catch (const voxel::TableTooLarge& e) {
         throw RequestError("taulut: " + std::string(e.what()) +
@@ -133,25 +130,8 @@ class TauLut final : public Prepared {
     });
   }
 
-  /// The irradiance map of Eq. 2 per light (with its first hits, from which the voxel-number map
-  /// follows).
-  std::vector<atlas::TranslucentShadowMap> lightViews(const SceneDescription& scene,
-                                                      Statistics& stats) const {
-    return stats.timeFrame("irradiance_maps", [&] {
-      scene::IrradianceSettings irr;
-      irr.eta = scene.medium.material.eta;
-      irr.rayEpsilon = scene.rayEpsilon();
-      std::vector<atlas::TranslucentShadowMap> maps;
-      for (const auto& light : scene.lights)
-        maps.emplace_back(light, scene.mesh, scene.vertexNormals, *scene.caster, irr,
-                          int(mKnobs.integer("map")), scene.parallelFor);
-      return maps;
-    });
-  }
-
   KnobValues mKnobs;
-  VoxelMedia mMedia;       ///< its grid moves to mGrid, then into mPaths
-  voxel::MediaGrid mGrid;  ///< until buildPaths moves it into mPaths
+  VoxelMedia mMedia;  ///< its grid moves into mPaths (buildPaths)
   voxel::SurfaceVoxels mSurface;
   voxel::SurfacePaths mPaths;
   voxel::SurfaceVoxelLookup mLookup;

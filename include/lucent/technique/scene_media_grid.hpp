@@ -12,6 +12,7 @@
 #include "../voxel/voxelize.hpp"
 #include "knob.hpp"
 #include "scene.hpp"
+#include "statistics.hpp"
 
 namespace lucent::technique::detail {
 
@@ -28,6 +29,18 @@ struct VoxelMedia {
   bool binned = false;  ///< the field had more distinct values than media fit: binned (stated)
   int objectMedia() const { return fieldMedia.empty() ? 1 : int(fieldMedia.size()); }
 };
+
+/// The grid's figures, and a warning when the field was binned.
+inline void reportMedia(const VoxelMedia& media, const std::string& technique,
+                        const voxel::MediaGrid& grid, Statistics& stats) {
+  stats.figures["grid_voxels"] = double(grid.voxelCount());
+  stats.figures["field_media"] = double(media.fieldMedia.size());
+  if (media.binned)
+    stats.warnings.push_back(technique +
+                             ": the coefficient field has more distinct values than the " +
+                             std::to_string(media.fieldMedia.size()) +
+                             " media a voxel's byte holds; binned by mean sigma_t");
+}
 
 /// The coefficients of media 1..: the field's as voxelised, the materials' as the scene has them
 /// now (a material edit needs no new grid).

@@ -81,12 +81,18 @@ struct Technique {
 };
 
 namespace detail {
-/// Irradiance through the scene's material boundary, with the technique's env-strata knob.
-inline scene::IrradianceSettings irradianceSettings(const SceneDescription& scene,
-                                                    const KnobValues& knobs) {
+/// Irradiance through the scene's material boundary.
+inline scene::IrradianceSettings irradianceSettings(const SceneDescription& scene) {
   scene::IrradianceSettings irr;
   irr.eta = scene.medium.material.eta;
   irr.rayEpsilon = scene.rayEpsilon();
+  return irr;
+}
+
+/// The same, with the technique's env-strata knob.
+inline scene::IrradianceSettings irradianceSettings(const SceneDescription& scene,
+                                                    const KnobValues& knobs) {
+  scene::IrradianceSettings irr = irradianceSettings(scene);
   irr.environmentStrata = int(knobs.integer("env-strata"));
   return irr;
 }

@@ -135,18 +135,26 @@ std::vector<glm::dvec3> evaluate(const Radiosity& eval, const SceneDescription& 
   });
 }
 
+/// One light-view map per light, `resolution` texels a side, timed as frame phase `phase`.
+inline std::vector<atlas::TranslucentShadowMap> lightViewMaps(const SceneDescription& scene,
+                                                              const scene::IrradianceSettings& irr,
+                                                              int resolution, Statistics& stats,
+                                                              const std::string& phase) {
+  return stats.timeFrame(phase, [&] {
+    std::vector<atlas::TranslucentShadowMap> maps;
+    for (const auto& light : scene.lights)
+      maps.emplace_back(light, scene.mesh, scene.vertexNormals, *scene.caster, irr, resolution,
+                        scene.parallelFor);
+    return maps;
+  });
+}
+
 /// One translucent shadow map per light (hybrid, tsm).
 inline std::vector<atlas::TranslucentShadowMap> shadowMaps(const SceneDescription& scene,
                                                            const KnobValues& knobs,
                                                            Statistics& stats) {
-  return stats.timeFrame("shadow_map", [&] {
-    std::vector<atlas::TranslucentShadowMap> maps;
-    for (const auto& light : scene.lights)
-      maps.emplace_back(light, scene.mesh, scene.vertexNormals, *scene.caster,
-                        irradianceSettings(scene, knobs), int(knobs.integer("map")),
-                        scene.parallelFor);
-    return maps;
-  });
+  return lightViewMaps(scene, irradianceSettings(scene, knobs), int(knobs.integer("map")), stats,
+                       "shadow_map");
 }
 
 template <class Profile>

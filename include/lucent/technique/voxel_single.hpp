@@ -36,15 +36,8 @@ class VoxelSingle final : public Prepared {
         mInclusions(scene.inclusions.size()),
         mMedia(stats.timePrepare(
             "voxelize", [&] { return mediaGridOf(scene, int(knobs.integer("voxels"))); })) {
-    stats.figures["grid_voxels"] = double(mMedia.grid.voxelCount());
-    stats.figures["field_media"] = double(mMedia.fieldMedia.size());
+    reportMedia(mMedia, "voxel-single", mMedia.grid, stats);
     stats.bytes = double(mMedia.grid.voxelCount() * (1 + 4));
-    if (mMedia.binned)
-      stats.warnings.push_back(
-          "voxel-single: the coefficient field has more distinct values than "
-          "the " +
-          std::to_string(mMedia.fieldMedia.size()) +
-          " media a voxel's byte holds; binned by mean sigma_t");
   }
 
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
