@@ -19,8 +19,8 @@ using test::dipoleOf;
 using test::SmallScene;
 
 namespace {
-/// A deliberately bad parameterization: every triangle its own chart, each shrunk by a random factor
-/// in [0.2, 1] inside its own grid cell (area ratios vary 25x across the surface).
+/// A deliberately bad parameterization: every triangle its own chart, each shrunk by a random
+/// factor in [0.2, 1] inside its own grid cell (area ratios vary 25x across the surface).
 std::vector<glm::dvec2> randomlyScaledTriangleCharts(const scene::TriangleMesh& mesh) {
   const std::size_t n = mesh.triangles.size();
   const int cells = int(std::ceil(std::sqrt(double(n))));
@@ -40,18 +40,21 @@ std::vector<glm::dvec2> randomlyScaledTriangleCharts(const scene::TriangleMesh& 
     const double span = std::max({ab, std::abs(cx), cy, std::abs(ab - cx)});
     uv.push_back(o + 0.01 * k * glm::dvec2(1));
     uv.push_back(o + k * glm::dvec2(ab, 0) / span * 0.98 + 0.01 * k * glm::dvec2(1));
-    uv.push_back(o + k * glm::dvec2(std::max(cx, 0.0), cy) / span * 0.98 + 0.01 * k * glm::dvec2(1));
+    uv.push_back(o + k * glm::dvec2(std::max(cx, 0.0), cy) / span * 0.98 +
+                 0.01 * k * glm::dvec2(1));
   }
   return uv;
 }
 
 atlas::IrradianceAtlas irradianceOf(const SmallScene& s, const atlas::TextureAtlas& a) {
-  return atlas::renderIrradianceAtlas(a, s.mesh, s.normals, s.lights, *s.caster, s.irr, util::tbbFor);
+  return atlas::renderIrradianceAtlas(a, s.mesh, s.normals, s.lights, *s.caster, s.irr,
+                                      util::tbbFor);
 }
 
 glm::dvec3 truthPower(const SmallScene& s, double spacing) {
   const auto samples = reference::buildSurfaceSamples(s.mesh, spacing);
-  const reference::DipoleTruth<double> truth(samples, dipoleOf<double>("skin1"), s.lights, *s.caster, s.irr, util::tbbFor);
+  const reference::DipoleTruth<double> truth(samples, dipoleOf<double>("skin1"), s.lights,
+                                             *s.caster, s.irr, util::tbbFor);
   return truth.stats().transmittedPower;
 }
 
@@ -69,23 +72,27 @@ TEST_CASE("Atlas integral of E' = surface integral of E (Eq. 6-7), for any param
   o.resolution = 1024;
   const auto charts = atlas::buildTextureAtlas(torus.mesh, o);
   const double builtIn = worstRelative(irradianceOf(torus, charts).totalPower, surface);
-  const auto scattered = atlas::atlasFromUvs(torus.mesh, randomlyScaledTriangleCharts(torus.mesh), 1024);
+  const auto scattered =
+      atlas::atlasFromUvs(torus.mesh, randomlyScaledTriangleCharts(torus.mesh), 1024);
   REQUIRE(scattered.stats.areaStretchMax / scattered.stats.areaStretchMin > 10);
   const auto scatteredIrr = irradianceOf(torus, scattered);
   const double distorted = worstRelative(scatteredIrr.totalPower, surface);
-  // Control: without the A_S/A_T factor (one common scale for all texels) the distorted atlas is wrong.
+  // Control: without the A_S/A_T factor (one common scale for all texels) the distorted atlas is
+  // wrong.
   glm::dvec3 naive(0);
   std::size_t owned = 0;
   for (std::size_t i = 0; i < scatteredIrr.power.size(); ++i) {
     const auto t = scattered.texelTriangle[i];
     if (t < 0) continue;
     ++owned;
-    naive += glm::dvec3(scatteredIrr.power[i]) * double(scattered.texelCount[std::size_t(t)]) / torus.mesh.triangleArea(std::size_t(t));
+    naive += glm::dvec3(scatteredIrr.power[i]) * double(scattered.texelCount[std::size_t(t)]) /
+             torus.mesh.triangleArea(std::size_t(t));
   }
   naive *= torus.mesh.surfaceArea() / double(owned);
   const double withoutRatio = worstRelative(naive, surface);
-  INFO("relative error of the atlas integral: built-in charts " << builtIn << ", random one-triangle charts "
-       << distorted << ", same without A_S/A_T " << withoutRatio);
+  INFO("relative error of the atlas integral: built-in charts "
+       << builtIn << ", random one-triangle charts " << distorted << ", same without A_S/A_T "
+       << withoutRatio);
   CHECK(builtIn < 2e-3);
   CHECK(distorted < 5e-3);
   CHECK(withoutRatio > 10 * distorted);
@@ -101,7 +108,8 @@ TEST_CASE("Eq. 10 weights are unbiased: the mean over seeds equals the exhaustiv
   // The integral the sampler estimates, summed over every texel (texel centres, as sampled below).
   glm::dvec3 exact(0);
   for (std::size_t i = 0; i < irr.power.size(); ++i)
-    if (irr.importance[i] > 0) exact += glm::dvec3(irr.power[i]) * d.rd(glm::length(glm::dvec3(irr.position[i]) - xo));
+    if (irr.importance[i] > 0)
+      exact += glm::dvec3(irr.power[i]) * d.rd(glm::length(glm::dvec3(irr.position[i]) - xo));
   for (const auto sampler : {atlas::TexelSampler::Mipmap, atlas::TexelSampler::RowMajor}) {
     atlas::SamplingOptions so;
     so.samples = 64;
@@ -130,7 +138,9 @@ TEST_CASE("Eq. 10 weights are unbiased: the mean over seeds equals the exhaustiv
   }
 }
 
-TEST_CASE("TSIS on a 10 mm skin1 sphere, 1600 samples: RMSE <= 0.010 against the truth; per vertex and hybrid too") {
+TEST_CASE(
+    "TSIS on a 10 mm skin1 sphere, 1600 samples: RMSE <= 0.010 against the truth, per vertex and "
+    "hybrid too") {
   const SmallScene s(scene::shapes::sphere(1.0, 5), 10.0, 160);
   const auto dd = dipoleOf<double>("skin1");
   const auto df = dipoleOf<float>("skin1");
@@ -151,18 +161,24 @@ TEST_CASE("TSIS on a 10 mm skin1 sphere, 1600 samples: RMSE <= 0.010 against the
   const double diag = s.mesh.bounds().diagonal();
   const atlas::HybridProfiles profiles(dd, rp, diag);
   std::vector<atlas::TranslucentShadowMap> maps;
-  for (const auto& l : s.lights) maps.emplace_back(l, s.mesh, s.normals, *s.caster, s.irr, 512, util::tbbFor);
-  const atlas::LocalTermEvaluator local(std::move(maps),
-                                        atlas::makeRingFilter([&](double r) { return glm::dvec3(profiles.local(float(r))); }, 20, 20, diag),
-                                        profiles.local, 1.3f);
+  for (const auto& l : s.lights)
+    maps.emplace_back(l, s.mesh, s.normals, *s.caster, s.irr, 512, util::tbbFor);
+  const atlas::LocalTermEvaluator local(
+      std::move(maps),
+      atlas::makeRingFilter([&](double r) { return glm::dvec3(profiles.local(float(r))); }, 20, 20,
+                            diag),
+      profiles.local, 1.3f);
   so.samples = 900;
   const atlas::TsisEvaluator global(atlas::drawImportanceSamples(irr, so), profiles.global, 1.3f);
-  const image::Image hybrid = reference::renderTruth(atlas::HybridEvaluator(local, global), s.camera, hits, util::tbbFor);
+  const image::Image hybrid =
+      reference::renderTruth(atlas::HybridEvaluator(local, global), s.camera, hits, util::tbbFor);
 
-  const auto ePixel = image::compareImages(perPixel, truth), eVertex = image::compareImages(perVertex, truth),
+  const auto ePixel = image::compareImages(perPixel, truth),
+             eVertex = image::compareImages(perVertex, truth),
              eHybrid = image::compareImages(hybrid, truth);
-  INFO("RMSE (tone-mapped): per pixel " << ePixel.rmseToneMapped << ", per vertex " << eVertex.rmseToneMapped
-       << ", hybrid 900+401 " << eHybrid.rmseToneMapped << "; relative RMS " << ePixel.relativeRms << " "
+  INFO("RMSE (tone-mapped): per pixel "
+       << ePixel.rmseToneMapped << ", per vertex " << eVertex.rmseToneMapped << ", hybrid 900+401 "
+       << eHybrid.rmseToneMapped << "; relative RMS " << ePixel.relativeRms << " "
        << eVertex.relativeRms << " " << eHybrid.relativeRms);
   CHECK(ePixel.rmseToneMapped <= 0.010);
   CHECK(eVertex.rmseToneMapped <= 0.010);
@@ -172,20 +188,23 @@ TEST_CASE("TSIS on a 10 mm skin1 sphere, 1600 samples: RMSE <= 0.010 against the
 
 TEST_CASE("Translucent shadow map on a flat slab: the ring filter returns E_t x int Rd 2 pi r dr") {
   // Semi-infinite limit as in the truth's slab test: every filter sample lies on the lit plane.
-  // 1 mm cells: the smoothed normals along the top face's rim (which lower E there) cover 3 % of it.
+  // 1 mm cells: the smoothed normals along the top face's rim (which lower E there) cover 3 % of
+  // it.
   scene::TriangleMesh slab = scene::shapes::box(glm::dvec3(60, 60, 10), 1.0);
   raycast::EmbreeRayCaster caster(slab);
   const auto d = dipoleOf<double>("skin1");
   const scene::Light light = scene::DirectionalLight{glm::dvec3(0, 0, 1), glm::dvec3(1)};
   scene::IrradianceSettings irr;
   irr.rayEpsilon = 1e-4;
-  const atlas::TranslucentShadowMap map(light, slab, slab.vertexNormals(), caster, irr, 2048, util::tbbFor);
+  const atlas::TranslucentShadowMap map(light, slab, slab.vertexNormals(), caster, irr, 2048,
+                                        util::tbbFor);
   auto rd = [&](double r) { return glm::dvec3(d.rd(r)); };
   const auto ring = atlas::makeRingFilter(rd, 24, 16, 100.0, 0.9995);
   const glm::dvec3 b = map.filter(glm::dvec3(0.0123, -0.0371, 10.0), ring, rd);
   const double et = optics::fresnelTransmittance(1.0, 1.3);
   const auto expected = d.cumulative(ring.outerRadius) * et;
-  INFO("B " << b.x << " " << b.y << " " << b.z << " expected " << expected.x << " " << expected.y << " " << expected.z);
+  INFO("B " << b.x << " " << b.y << " " << b.z << " expected " << expected.x << " " << expected.y
+            << " " << expected.z);
   CHECK(worstRelative(b, expected) < 0.02);
   // And the map holds what the light puts in: E_t times the lit top face (120 x 120 mm).
   CHECK(map.totalPower().x == doctest::Approx(et * 120 * 120).epsilon(0.01));
@@ -205,7 +224,9 @@ TEST_CASE("No light reaching the surface: no samples, black image, no division b
   CHECK(b == glm::dvec3(0));
 }
 
-TEST_CASE("Hard cases: tsis and hybrid stay finite for spectralon, 0.01 mm and 10 m objects, a thin twirl") {
+TEST_CASE(
+    "Hard cases: tsis and hybrid stay finite for spectralon, 0.01 mm and 10 m objects, a thin "
+    "twirl") {
   struct Case {
     const char* what;
     scene::TriangleMesh mesh;
@@ -230,11 +251,15 @@ TEST_CASE("Hard cases: tsis and hybrid stay finite for spectralon, 0.01 mm and 1
     const atlas::TsisEvaluator tsis(atlas::drawImportanceSamples(irr, so), df);
     const atlas::HybridProfiles profiles(dd, atlas::hybridRp(dd, 0.05), diag);
     std::vector<atlas::TranslucentShadowMap> maps;
-    for (const auto& l : s.lights) maps.emplace_back(l, s.mesh, s.normals, *s.caster, s.irr, 64, util::tbbFor);
-    const atlas::LocalTermEvaluator local(std::move(maps),
-                                          atlas::makeRingFilter([&](double r) { return glm::dvec3(profiles.local(float(r))); }, 4, 4, diag),
-                                          profiles.local, float(dd.eta));
-    const atlas::TsisEvaluator global(atlas::drawImportanceSamples(irr, so), profiles.global, float(dd.eta));
+    for (const auto& l : s.lights)
+      maps.emplace_back(l, s.mesh, s.normals, *s.caster, s.irr, 64, util::tbbFor);
+    const atlas::LocalTermEvaluator local(
+        std::move(maps),
+        atlas::makeRingFilter([&](double r) { return glm::dvec3(profiles.local(float(r))); }, 4, 4,
+                              diag),
+        profiles.local, float(dd.eta));
+    const atlas::TsisEvaluator global(atlas::drawImportanceSamples(irr, so), profiles.global,
+                                      float(dd.eta));
     const atlas::HybridEvaluator hybrid(local, global);
     const auto hits = reference::primaryHits(s.camera, s.mesh, s.normals, *s.caster, util::tbbFor);
     double lit = 0;

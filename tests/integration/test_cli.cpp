@@ -300,7 +300,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "--repair: an open, unwelded, partly inside-out scan renders; the report says what changed") {
+    "--repair: an open, unwelded, partly inside-out scan renders, the report says what changed") {
   lucent::test::TempDir dir;
   // A laser-scan-like sphere: a triangle soup (every corner its own point, as STL stores it; the
   // reader welds it), a cap of faces missing (a hole), one face wound the other way.
@@ -345,7 +345,7 @@ TEST_CASE(
   CHECK(contains(r.err, "sample budget reached"));
 }
 
-TEST_CASE("render writes EXR, PNG and stats; compare of an image with itself reports zero error") {
+TEST_CASE("render writes EXR, PNG and stats, compare of an image with itself reports zero error") {
   lucent::test::TempDir dir;
   const Run r =
       lucentCli("render --shape sphere --size-mm 10 --width 32 --height 32 --quiet --out " +
@@ -379,7 +379,7 @@ TEST_CASE("render writes EXR, PNG and stats; compare of an image with itself rep
   CHECK(rel < 0.02);
 }
 
-TEST_CASE("materials lists every measured material; every command has --help") {
+TEST_CASE("materials lists every measured material, every command has --help") {
   lucent::test::TempDir dir;
   const Run m = lucentCli("materials --csv", dir);
   REQUIRE(m.code == 0);
@@ -712,7 +712,7 @@ void writeBallNifti(const std::string& path) {
 
 TEST_CASE(
     "render --volume FILE --iso X: a scan in NRRD, MetaImage or NIfTI becomes the object, its "
-    "isosurface in the scan's millimetres; bad thresholds exit 2 with the range") {
+    "isosurface in the scan's millimetres, bad thresholds exit 2 with the range") {
   lucent::test::TempDir dir;
   const std::string nrrd = dir / "ball.nrrd", mhd = dir / "ball.mhd", nii = dir / "ball.nii.gz";
   writeBallNrrd(nrrd);
@@ -753,7 +753,7 @@ TEST_CASE(
 
 TEST_CASE(
     "render --volume --transfer: a label map with a material per label (its surface from the "
-    "labels), a piecewise-linear transfer function; a label with no material, a negative "
+    "labels), a piecewise-linear transfer function, a label with no material, a negative "
     "coefficient exit 2") {
   lucent::test::TempDir dir;
   // Labels: 0 outside, 1 a ball of radius 8 mm, 2 a core of radius 4 mm.

@@ -16,11 +16,12 @@ using namespace lucent;
 using test::dipoleOf;
 using test::SmallScene;
 
-
-TEST_CASE("Flat slab under normal light: B at the centre equals E_t x the total diffuse reflectance") {
-  // A 120 x 120 x 20 mm skin1 slab lit head-on. Far from the edges the surface is a semi-infinite medium,
-  // where int_A Rd dA = Rd_total (Jensen 2001, Eq. 14): an analytic truth for the brute-force sum. The
-  // square is wide enough (60 mm >> 1/sigma_tr = 3.7 mm) that the missing tail is below 1e-6.
+TEST_CASE(
+    "Flat slab under normal light: B at the centre equals E_t x the total diffuse reflectance") {
+  // A 120 x 120 x 20 mm skin1 slab lit head-on. Far from the edges the surface is a semi-infinite
+  // medium, where int_A Rd dA = Rd_total (Jensen 2001, Eq. 14): an analytic truth for the
+  // brute-force sum. The square is wide enough (60 mm >> 1/sigma_tr = 3.7 mm) that the missing tail
+  // is below 1e-6.
   scene::TriangleMesh slab = scene::shapes::box(glm::dvec3(60, 60, 10), 4.0);
   raycast::EmbreeRayCaster caster(slab);
   const auto d = dipoleOf<double>("skin1");
@@ -37,25 +38,31 @@ TEST_CASE("Flat slab under normal light: B at the centre equals E_t x the total 
     const glm::dvec3 b = truth.radiosity(glm::dvec3(0.0123, -0.0371, 10.0));
     double worst = 0;
     for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(b[c] / (et * d.total()[c]) - 1));
-    INFO("spacing " << fraction << " mfp: worst relative error " << worst << " (" << samples.size() << " samples)");
-    CHECK(worst < 1e-5);  // measured 6e-8 at mfp/2: the midpoint rule on a flat lattice is superconvergent
+    INFO("spacing " << fraction << " mfp: worst relative error " << worst << " (" << samples.size()
+                    << " samples)");
+    CHECK(worst <
+          1e-5);  // measured 6e-8 at mfp/2: the midpoint rule on a flat lattice is superconvergent
     CHECK(worst < previousError);
     previousError = worst;
   }
 }
 
 TEST_CASE("The brute-force truth converges as the sample spacing shrinks") {
-  // A coarse icosphere (edges ~0.8 mm), so every spacing below subdivides its triangles differently.
+  // A coarse icosphere (edges ~0.8 mm), so every spacing below subdivides its triangles
+  // differently.
   const SmallScene s(scene::shapes::sphere(1.0, 2), 10.0, 48);
   const auto d = dipoleOf<float>("skin1");
   const double mfp = d.minMeanFreePath();
   const image::Image finest = s.render(d, mfp / 8);
   std::vector<double> errors;
-  for (double f : {1.0, 0.5, 0.25}) errors.push_back(image::compareImages(s.render(d, f * mfp), finest).relativeRms);
-  INFO("relative RMS at mfp, mfp/2, mfp/4 against mfp/8: " << errors[0] << " " << errors[1] << " " << errors[2]);
+  for (double f : {1.0, 0.5, 0.25})
+    errors.push_back(image::compareImages(s.render(d, f * mfp), finest).relativeRms);
+  INFO("relative RMS at mfp, mfp/2, mfp/4 against mfp/8: " << errors[0] << " " << errors[1] << " "
+                                                           << errors[2]);
   CHECK(errors[0] > errors[1]);
   CHECK(errors[1] > errors[2]);
-  CHECK(errors[2] < errors[0] / 4);  // at least first order overall (second order where Rd is smooth)
+  CHECK(errors[2] <
+        errors[0] / 4);  // at least first order overall (second order where Rd is smooth)
   CHECK(errors[2] < 0.01);
 }
 
@@ -70,7 +77,9 @@ TEST_CASE("The float truth (vectorised kernel) agrees with the double truth (std
   CHECK(e.relativeRms < 1e-5);
 }
 
-TEST_CASE("Hard cases render finite, non-negative images: spectralon, eta = 1 and 2.5, 0.01 mm, 10 m, thin twirl") {
+TEST_CASE(
+    "Hard cases render finite, non-negative images: spectralon, eta = 1 and 2.5, 0.01 mm, 10 m, "
+    "thin twirl") {
   struct Case {
     const char* what;
     scene::TriangleMesh mesh;
@@ -122,7 +131,8 @@ TEST_CASE("Spacing choice: a fraction of the mean free path, coarsened only by t
   CHECK(reference::countSurfaceSamples(m, floor.spacing) == m.triangles.size());
 }
 
-TEST_CASE("Environment light: a uniform sky gives E = 2 pi L int_0^1 Ft(mu) mu dmu on a convex object") {
+TEST_CASE(
+    "Environment light: a uniform sky gives E = 2 pi L int_0^1 Ft(mu) mu dmu on a convex object") {
   scene::TriangleMesh m = scene::shapes::sphere(1, 5);
   m.scaleToSize(10);
   raycast::EmbreeRayCaster caster(m);
@@ -134,7 +144,8 @@ TEST_CASE("Environment light: a uniform sky gives E = 2 pi L int_0^1 Ft(mu) mu d
   irr.eta = 1.3;
   irr.rayEpsilon = 1e-4;
   irr.environmentStrata = 16;
-  double expectedPerUnit = 0;  // 2 pi int_0^1 Ft(mu) mu dmu by the midpoint rule, independent of the sampler
+  double expectedPerUnit =
+      0;  // 2 pi int_0^1 Ft(mu) mu dmu by the midpoint rule, independent of the sampler
   const int n = 100000;
   for (int i = 0; i < n; ++i) {
     const double mu = (i + 0.5) / n;
@@ -143,14 +154,16 @@ TEST_CASE("Environment light: a uniform sky gives E = 2 pi L int_0^1 Ft(mu) mu d
   const auto samples = reference::buildSurfaceSamples(m, 1.0);
   glm::dvec3 mean(0);
   for (std::size_t i = 0; i < samples.size(); ++i)
-    mean += scene::irradianceAt(samples.position[i], samples.normal[i], samples.faceNormal[i], lights, caster, irr, i);
+    mean += scene::irradianceAt(samples.position[i], samples.normal[i], samples.faceNormal[i],
+                                lights, caster, irr, i);
   mean /= double(samples.size());
-  INFO("mean E " << mean.x << " " << mean.y << " " << mean.z << ", expected " << 2 * expectedPerUnit);
+  INFO("mean E " << mean.x << " " << mean.y << " " << mean.z << ", expected "
+                 << 2 * expectedPerUnit);
   CHECK(mean.x == doctest::Approx(2.0 * expectedPerUnit).epsilon(0.01));
   CHECK(mean.z == doctest::Approx(0.5 * expectedPerUnit).epsilon(0.01));
 }
 
-TEST_CASE("Jensen-Buhler: epsilon = 0 is the exact sum; the error shrinks with epsilon") {
+TEST_CASE("Jensen-Buhler: epsilon = 0 is the exact sum, the error shrinks with epsilon") {
   const SmallScene s(scene::shapes::torus(), 20.0, 40);
   const auto d = dipoleOf<double>("skin1");
   const auto samples = reference::buildSurfaceSamples(s.mesh, 0.5 * d.minMeanFreePath());
@@ -166,9 +179,12 @@ TEST_CASE("Jensen-Buhler: epsilon = 0 is the exact sum; the error shrinks with e
   std::vector<double> errors;
   for (double eps : {0.5, 0.1, 0.02}) {
     const reference::JensenBuhlerTree<double> tree(truth, eps);
-    errors.push_back(image::compareImages(reference::renderTruth(tree, s.camera, hits, util::tbbFor), exact).relativeRms);
+    errors.push_back(
+        image::compareImages(reference::renderTruth(tree, s.camera, hits, util::tbbFor), exact)
+            .relativeRms);
   }
-  INFO("relative RMS at epsilon 0.5, 0.1, 0.02: " << errors[0] << " " << errors[1] << " " << errors[2]);
+  INFO("relative RMS at epsilon 0.5, 0.1, 0.02: " << errors[0] << " " << errors[1] << " "
+                                                  << errors[2]);
   CHECK(errors[0] > errors[1]);
   CHECK(errors[1] > errors[2]);
   CHECK(errors[2] < 0.01);

@@ -59,7 +59,7 @@ bool near(double value, double expected, double tolerance) {
 
 TEST_CASE(
     "Hard-case matrix: every technique x 3 materials x 4 sizes x 3 eta is finite and "
-    "non-negative, or refused by its stated range; inside it, close to its model's truth") {
+    "non-negative, or refused by its stated range, inside it, close to its model's truth") {
   const auto& registry = technique::appRegistry();
   std::FILE* table = nullptr;
   if (const char* path = std::getenv("LUCENT_HARD_CASE_TABLE")) table = std::fopen(path, "w");

@@ -140,7 +140,7 @@ TEST_CASE(
   CHECK(b[0].x > 5 * (1 + sigma * 2 * h) * std::exp(-sigma * 2 * h));
 }
 
-TEST_CASE("taulut: lut, hierarchical and march agree; fp16 within its stated precision") {
+TEST_CASE("taulut: lut, hierarchical and march agree, fp16 within its stated precision") {
   TestScene s(scene::shapes::cubeWithCavity(0.6), grey(3), {0.3, 0.2, -1});
   const std::vector<glm::dvec3> points{{0, 0, 1}, {0.5, 0.3, 1}, {1, 0.2, -0.1}, {-0.4, 1, 0.6}};
   const lt::KnobList base{{"voxels", "24"}, {"map", "256"}};

@@ -264,7 +264,7 @@ void writeObj(const std::string& path, const scene::TriangleMesh& m) {
 
 TEST_CASE(
     "Inner bodies from the CLI: --inclusion-mesh in the object's coordinates, --fill for the "
-    "bottle; bad ones exit 2 with the fix") {
+    "bottle, bad ones exit 2 with the fix") {
   test::TempDir dir;
   const std::string body = dir / "body.obj", core = dir / "core.obj", outside = dir / "out.obj";
   writeObj(body, scene::shapes::sphere(10.0, 3));

@@ -21,7 +21,8 @@ struct Estimate {
 
 /// Mean of `n` path-traced estimates along the rays `rayOf(i)` (each its own seeded generator).
 Estimate estimate(const reference::VolumePathTracer& tracer, std::size_t n,
-                  const std::function<scene::Ray(std::size_t, util::Rng&)>& rayOf, std::uint64_t seed) {
+                  const std::function<scene::Ray(std::size_t, util::Rng&)>& rayOf,
+                  std::uint64_t seed) {
   constexpr std::size_t kBlocks = 64;
   std::vector<glm::dvec3> sum(kBlocks, glm::dvec3(0)), sumSq(kBlocks, glm::dvec3(0));
   std::vector<reference::PathTracerStats> stats(kBlocks);
@@ -45,7 +46,8 @@ Estimate estimate(const reference::VolumePathTracer& tracer, std::size_t n,
 /// Rays from far away at random through the disc that covers a sphere of `radius` at the origin.
 scene::Ray rayThroughSphere(double radius, util::Rng& rng) {
   const double z = 1 - 2 * rng.uniform(), phi = 2 * optics::kPi * rng.uniform();
-  const glm::dvec3 dir(std::sqrt(1 - z * z) * std::cos(phi), std::sqrt(1 - z * z) * std::sin(phi), z);
+  const glm::dvec3 dir(std::sqrt(1 - z * z) * std::cos(phi), std::sqrt(1 - z * z) * std::sin(phi),
+                       z);
   glm::dvec3 t, b;
   util::orthonormalBasis(dir, t, b);
   const double r = radius * std::sqrt(rng.uniform()), a = 2 * optics::kPi * rng.uniform();
@@ -75,17 +77,19 @@ void checkClean(const reference::PathTracerStats& s) {
   CHECK(double(s.leakedPaths) <= 1e-4 * double(s.cameraSamples));
 }
 
-void checkWithin(const Estimate& e, const glm::dvec3& exact, double sigmas, const std::string& what) {
+void checkWithin(const Estimate& e, const glm::dvec3& exact, double sigmas,
+                 const std::string& what) {
   for (int c = 0; c < 3; ++c) {
-    INFO(what << " channel " << c << ": " << e.mean[c] << " +- " << e.stdError[c] << ", exact " << exact[c]);
+    INFO(what << " channel " << c << ": " << e.mean[c] << " +- " << e.stdError[c] << ", exact "
+              << exact[c]);
     CHECK(std::abs(e.mean[c] - exact[c]) <= sigmas * e.stdError[c] + 1e-12);
   }
 }
 }  // namespace
 
 TEST_CASE("White furnace: albedo-1 media under uniform light return exactly the light's radiance") {
-  // Radiance invariance: with no absorption and L = 1 from every direction, L = 1 everywhere, whatever
-  // the shape, the indices, the nesting or the density field. Surface reflection included.
+  // Radiance invariance: with no absorption and L = 1 from every direction, L = 1 everywhere,
+  // whatever the shape, the indices, the nesting or the density field. Surface reflection included.
   const double R = 1.0;
   const auto env = uniformEnvironment(1.0);
   reference::PathTracerSettings s;
@@ -93,41 +97,51 @@ TEST_CASE("White furnace: albedo-1 media under uniform light return exactly the 
 
   SUBCASE("a Fresnel sphere (eta 1.3), sigma_s differing 4x between channels") {
     reference::MediumScene scene;
-    scene.addBody(scene::shapes::sphere(R, 4), scene.addMedium(medium(glm::dvec3(0), {1, 2, 4}, 1.3, 0.5)), 0);
+    scene.addBody(scene::shapes::sphere(R, 4),
+                  scene.addMedium(medium(glm::dvec3(0), {1, 2, 4}, 1.3, 0.5)), 0);
     const raycast::EmbreeRayCaster caster(scene.mesh);
     const reference::VolumePathTracer tracer(scene, caster, {env}, s);
-    const Estimate e = estimate(tracer, 40000, [&](std::size_t, util::Rng& rng) { return rayThroughSphere(R, rng); }, 1);
+    const Estimate e = estimate(
+        tracer, 40000, [&](std::size_t, util::Rng& rng) { return rayThroughSphere(R, rng); }, 1);
     checkWithin(e, glm::dvec3(1), 4, "Fresnel sphere");
     checkClean(e.stats);
   }
   SUBCASE("a cube with a spherical cavity holding an inclusion of another index, a density field") {
     reference::MediumScene scene;
     reference::Medium outer = medium(glm::dvec3(0), {3, 2, 1}, 1.3);
-    outer.density = [](const glm::dvec3& p) { return 0.55 + 0.45 * std::sin(5 * p.x) * std::cos(4 * p.y); };
+    outer.density = [](const glm::dvec3& p) {
+      return 0.55 + 0.45 * std::sin(5 * p.x) * std::cos(4 * p.y);
+    };
     const auto outerId = scene.addMedium(outer);
     const auto innerId = scene.addMedium(medium(glm::dvec3(0), {6, 6, 6}, 1.6, -0.3));
-    scene.addBody(scene::shapes::cubeWithCavity(0.6), outerId, 0);        // cube of side 2, cavity radius 0.6
-    scene.addBody(scene::shapes::sphere(0.35, 3), innerId, 0);           // inclusion inside the (vacuum) cavity
+    scene.addBody(scene::shapes::cubeWithCavity(0.6), outerId,
+                  0);  // cube of side 2, cavity radius 0.6
+    scene.addBody(scene::shapes::sphere(0.35, 3), innerId,
+                  0);  // inclusion inside the (vacuum) cavity
     const raycast::EmbreeRayCaster caster(scene.mesh);
     const reference::VolumePathTracer tracer(scene, caster, {env}, s);
-    const Estimate e = estimate(tracer, 30000, [&](std::size_t, util::Rng& rng) { return rayThroughSphere(1.0, rng); }, 2);
+    const Estimate e = estimate(
+        tracer, 30000, [&](std::size_t, util::Rng& rng) { return rayThroughSphere(1.0, rng); }, 2);
     checkWithin(e, glm::dvec3(1), 4, "cube with cavity");
     checkClean(e.stats);
     CHECK(e.stats.scatterEvents > 30000);
   }
 }
 
-TEST_CASE("Index-matched isotropic half-space: reflected radiance = (a E / 4pi) H(mu) H(1) / (1 + mu)") {
-  // Chandrasekhar (1960): diffuse reflection of a normally incident parallel beam by a semi-infinite,
-  // isotropically scattering medium; its single-scattering part is (a E / 4pi) / (1 + mu). A box of
-  // 400 x 400 x 200 mean free paths stands in for the half-space (leakage ~ exp(-100)).
+TEST_CASE(
+    "Index-matched isotropic half-space: reflected radiance = (a E / 4pi) H(mu) H(1) / (1 + mu)") {
+  // Chandrasekhar (1960): diffuse reflection of a normally incident parallel beam by a
+  // semi-infinite, isotropically scattering medium; its single-scattering part is (a E / 4pi) / (1
+  // + mu). A box of 400 x 400 x 200 mean free paths stands in for the half-space (leakage ~
+  // exp(-100)).
   const double albedo = 0.8;
   reference::MediumScene scene;
   scene.addBody(scene::shapes::box(glm::dvec3(200, 200, 100), 100.0),
                 scene.addMedium(medium(glm::dvec3(1 - albedo), glm::dvec3(albedo), 1.0)), 0);
   for (auto& p : scene.mesh.positions) p.z -= 100;  // top face at z = 0
   const raycast::EmbreeRayCaster caster(scene.mesh);
-  const std::vector<scene::Light> lights{scene::DirectionalLight{glm::dvec3(0, 0, 1), glm::dvec3(1.0)}};
+  const std::vector<scene::Light> lights{
+      scene::DirectionalLight{glm::dvec3(0, 0, 1), glm::dvec3(1.0)}};
   for (double mu : {1.0, 0.5}) {
     const glm::dvec3 toEye(std::sqrt(1 - mu * mu), 0, mu);
     auto rayOf = [&](std::size_t, util::Rng& rng) {
@@ -136,9 +150,10 @@ TEST_CASE("Index-matched isotropic half-space: reflected radiance = (a E / 4pi) 
     };
     const double h = test::chandrasekharH(mu, albedo), h1 = test::chandrasekharH(1.0, albedo);
     const double scale = albedo / (4 * optics::kPi) / (1 + mu);
-    for (auto [orders, exact, label] : {std::tuple{reference::ScatteringOrders::All, scale * h * h1, "all orders"},
-                                        std::tuple{reference::ScatteringOrders::Single, scale, "single"},
-                                        std::tuple{reference::ScatteringOrders::Multiple, scale * (h * h1 - 1), "multiple"}}) {
+    for (auto [orders, exact, label] :
+         {std::tuple{reference::ScatteringOrders::All, scale * h * h1, "all orders"},
+          std::tuple{reference::ScatteringOrders::Single, scale, "single"},
+          std::tuple{reference::ScatteringOrders::Multiple, scale * (h * h1 - 1), "multiple"}}) {
       reference::PathTracerSettings s;
       s.orders = orders;
       const reference::VolumePathTracer tracer(scene, caster, lights, s);
@@ -151,16 +166,19 @@ TEST_CASE("Index-matched isotropic half-space: reflected radiance = (a E / 4pi) 
 }
 
 TEST_CASE("Behind a Fresnel boundary, light subpaths joined to the camera equal escaping paths") {
-  // Two independent estimators of the same paths (those with a straight scatter-to-scatter segment):
-  // the camera walk escaping to a bright environment cap, and light subpaths sampled from that cap,
-  // refracted in, and joined to camera segments by equiangular sampling. The (n1/n2)^2 radiance factor,
-  // the guided disc pdf and the hero-channel weights must all be right for them to agree.
+  // Two independent estimators of the same paths (those with a straight scatter-to-scatter
+  // segment): the camera walk escaping to a bright environment cap, and light subpaths sampled from
+  // that cap, refracted in, and joined to camera segments by equiangular sampling. The (n1/n2)^2
+  // radiance factor, the guided disc pdf and the hero-channel weights must all be right for them to
+  // agree.
   scene::EnvironmentLight cap;
   cap.width = 8, cap.height = 8;
   cap.radiance.assign(64, glm::vec3(0.02f));
-  for (int col = 0; col < 8; ++col) cap.radiance[std::size_t(col)] = glm::vec3(4.0f);  // the top row: a 22.5 deg cap
+  for (int col = 0; col < 8; ++col)
+    cap.radiance[std::size_t(col)] = glm::vec3(4.0f);  // the top row: a 22.5 deg cap
   reference::MediumScene scene;
-  scene.addBody(scene::shapes::sphere(1.0, 4), scene.addMedium(medium({0.3, 0.1, 0.02}, {2, 3, 5}, 1.3, 0.3)), 0);
+  scene.addBody(scene::shapes::sphere(1.0, 4),
+                scene.addMedium(medium({0.3, 0.1, 0.02}, {2, 3, 5}, 1.3, 0.3)), 0);
   const raycast::EmbreeRayCaster caster(scene.mesh);
   reference::PathTracerSettings escape;
   escape.connectableOnly = true;
@@ -168,11 +186,14 @@ TEST_CASE("Behind a Fresnel boundary, light subpaths joined to the camera equal 
   join.environment = reference::EnvironmentStrategy::Connect;
   join.lightSubpaths = 2;
   auto rayOf = [&](std::size_t, util::Rng& rng) { return rayThroughSphere(1.0, rng); };
-  const Estimate a = estimate(reference::VolumePathTracer(scene, caster, {cap}, escape), 600000, rayOf, 4);
-  const Estimate b = estimate(reference::VolumePathTracer(scene, caster, {cap}, join), 300000, rayOf, 5);
+  const Estimate a =
+      estimate(reference::VolumePathTracer(scene, caster, {cap}, escape), 600000, rayOf, 4);
+  const Estimate b =
+      estimate(reference::VolumePathTracer(scene, caster, {cap}, join), 300000, rayOf, 5);
   for (int c = 0; c < 3; ++c) {
     const double se = std::hypot(a.stdError[c], b.stdError[c]);
-    INFO("channel " << c << ": escape " << a.mean[c] << " +- " << a.stdError[c] << ", joined " << b.mean[c] << " +- " << b.stdError[c]);
+    INFO("channel " << c << ": escape " << a.mean[c] << " +- " << a.stdError[c] << ", joined "
+                    << b.mean[c] << " +- " << b.stdError[c]);
     CHECK(std::abs(a.mean[c] - b.mean[c]) <= 4 * se);
     CHECK(se < 0.035 * a.mean[c]);  // a test that could tell a 14 % error
   }
@@ -183,9 +204,12 @@ TEST_CASE("Behind a Fresnel boundary, light subpaths joined to the camera equal 
 
 TEST_CASE("Delta tracking: a constant density field matches the homogeneous medium") {
   reference::MediumScene homogeneous, field;
-  homogeneous.addBody(scene::shapes::sphere(1.0, 4), homogeneous.addMedium(medium({0.4, 0.2, 0.1}, {1, 2, 3}, 1.3)), 0);
+  homogeneous.addBody(scene::shapes::sphere(1.0, 4),
+                      homogeneous.addMedium(medium({0.4, 0.2, 0.1}, {1, 2, 3}, 1.3)), 0);
   reference::Medium m = medium({0.8, 0.4, 0.2}, {2, 4, 6}, 1.3);
-  m.density = [](const glm::dvec3&) { return 0.5; };  // half of a majorant of 1: many null collisions
+  m.density = [](const glm::dvec3&) {
+    return 0.5;
+  };  // half of a majorant of 1: many null collisions
   field.addBody(scene::shapes::sphere(1.0, 4), field.addMedium(m), 0);
   scene::EnvironmentLight sky;
   sky.width = 2, sky.height = 2;
@@ -193,8 +217,10 @@ TEST_CASE("Delta tracking: a constant density field matches the homogeneous medi
   const raycast::EmbreeRayCaster casterA(homogeneous.mesh), casterB(field.mesh);
   reference::PathTracerSettings s;
   auto rayOf = [&](std::size_t, util::Rng& rng) { return rayThroughSphere(1.0, rng); };
-  const Estimate a = estimate(reference::VolumePathTracer(homogeneous, casterA, {sky}, s), 40000, rayOf, 6);
-  const Estimate b = estimate(reference::VolumePathTracer(field, casterB, {sky}, s), 40000, rayOf, 7);
+  const Estimate a =
+      estimate(reference::VolumePathTracer(homogeneous, casterA, {sky}, s), 40000, rayOf, 6);
+  const Estimate b =
+      estimate(reference::VolumePathTracer(field, casterB, {sky}, s), 40000, rayOf, 7);
   for (int c = 0; c < 3; ++c) {
     INFO("channel " << c << ": homogeneous " << a.mean[c] << ", field " << b.mean[c]);
     CHECK(std::abs(a.mean[c] - b.mean[c]) <= 4 * std::hypot(a.stdError[c], b.stdError[c]));
@@ -202,10 +228,13 @@ TEST_CASE("Delta tracking: a constant density field matches the homogeneous medi
   checkClean(b.stats);
 }
 
-TEST_CASE("Path-traced images repeat for a fixed seed whatever the thread count; hard cases stay finite") {
+TEST_CASE(
+    "Path-traced images repeat for a fixed seed whatever the thread count, hard cases stay "
+    "finite") {
   const auto env = uniformEnvironment(1.0);
-  const std::vector<scene::Light> lights{env, scene::DirectionalLight{glm::dvec3(0, 0.5, -1), glm::dvec3(1)},
-                                         scene::PointLight{glm::dvec3(0, 3, 3), glm::dvec3(18)}};
+  const std::vector<scene::Light> lights{
+      env, scene::DirectionalLight{glm::dvec3(0, 0.5, -1), glm::dvec3(1)},
+      scene::PointLight{glm::dvec3(0, 3, 3), glm::dvec3(18)}};
   struct Case {
     const char* name;
     double size, eta;
@@ -227,7 +256,8 @@ TEST_CASE("Path-traced images repeat for a fixed seed whatever the thread count;
     s.rayEpsilon = 1e-5 * c.size;
     s.maxEvents = 20000;
     const reference::VolumePathTracer tracer(scene, caster, lights, s);
-    const auto camera = scene::PinholeCamera::frame(scene.mesh.bounds(), glm::dvec3(0.2, 0.4, 1), 12, 12);
+    const auto camera =
+        scene::PinholeCamera::frame(scene.mesh.bounds(), glm::dvec3(0.2, 0.4, 1), 12, 12);
     const auto serial = reference::renderPathTraced(tracer, caster, camera, s);
     const auto parallel = reference::renderPathTraced(tracer, caster, camera, s, util::tbbFor);
     std::size_t covered = 0;

@@ -33,8 +33,8 @@ double totalDiffuseReflectance(double sigmaA, double sigmaSPrime, double eta) {
 }  // namespace
 
 TEST_CASE(
-    "vtkLucentFilter: a lit slab's face matches the dipole's total diffuse reflectance; shadowed "
-    "side dark; progress") {
+    "vtkLucentFilter: a lit slab's face matches the dipole's total diffuse reflectance, shadowed "
+    "side dark, progress") {
   // A 60 x 60 x 30 mm box of skin, lit from +z with irradiance 2: far from the edges, the top face
   // is a half-space, where B = Ft(0) E Rd_total (Rd integrated over the plane).
   vtkNew<vtkTessellatedBoxSource> box;
@@ -94,17 +94,30 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "vtkLucentFilter: tiny, huge and eta-extreme inputs stay finite; bad input is an error, not a "
+    "vtkLucentFilter: tiny, huge and eta-extreme inputs stay finite, bad input is an error, not a "
     "crash") {
   vtkNew<vtkSphereSource> sphere;
   sphere->SetThetaResolution(24);
   sphere->SetPhiResolution(12);
+  // A 1 um spectralon sphere is 0.01 transport mean free paths across: outside the diffusion
+  // reference's range, so it is refused (empty output), and taulut, valid there, shades it.
+  {
+    vtkNew<vtkLucentFilter> refused;
+    refused->SetInputConnection(sphere->GetOutputPort());
+    refused->SetSizeMm(0.001);
+    refused->SetMaterial("spectralon");
+    refused->GlobalWarningDisplayOff();
+    refused->Update();
+    CHECK(refused->GetOutput()->GetNumberOfPoints() == 0);
+  }
   for (double size : {0.001, 1000.0}) {
     vtkNew<vtkLucentFilter> filter;
     filter->SetInputConnection(sphere->GetOutputPort());
     filter->SetSizeMm(size);
     filter->SetMaterial(size < 1 ? "spectralon" : "ketchup");
+    filter->SetTechnique(size < 1 ? "taulut" : "reference");
     filter->SetKnob("reference.max-samples", "20000");
+    filter->SetKnob("taulut.voxels", "12");
     filter->Update();
     vtkDataArray* b = filter->GetOutput()->GetPointData()->GetArray("Radiosity");
     REQUIRE(b != nullptr);

@@ -1,5 +1,5 @@
-// Lucent::QuadGraph: the AGPL technique offered in vtkLucentFilter by its own module, checked against the
-// dipole sum (the reference technique) on the same vertices.
+// Lucent::QuadGraph: the AGPL technique offered in vtkLucentFilter by its own module, checked
+// against the dipole sum (the reference technique) on the same vertices.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -27,13 +27,17 @@ std::vector<double> radiosity(vtkLucentFilter* filter) {
 }
 }  // namespace
 
-TEST_CASE("vtkLucentFilter offers quadgraph through Lucent::QuadGraph; per vertex it agrees with the dipole sum") {
+TEST_CASE(
+    "vtkLucentFilter offers quadgraph through Lucent::QuadGraph, per vertex it agrees with the "
+    "dipole sum") {
   REQUIRE(vtkLucentQuadGraph::Register());
   bool offered = false;
-  for (int i = 0; i < vtkLucentFilter::GetNumberOfTechniques(); ++i) offered |= vtkLucentFilter::GetTechniqueName(i) == "quadgraph";
+  for (int i = 0; i < vtkLucentFilter::GetNumberOfTechniques(); ++i)
+    offered |= vtkLucentFilter::GetTechniqueName(i) == "quadgraph";
   CHECK(offered);
 
-  // A 20 mm marble sphere lit from the side: high albedo, where diffusion and the dipole agree best.
+  // A 20 mm marble sphere lit from the side: high albedo, where diffusion and the dipole agree
+  // best.
   vtkNew<vtkSphereSource> sphere;
   sphere->SetRadius(10);
   sphere->SetThetaResolution(48);
@@ -58,9 +62,10 @@ TEST_CASE("vtkLucentFilter offers quadgraph through Lucent::QuadGraph; per verte
       r2 += reference[i] * reference[i];
       sd += diffusion[i], sr += reference[i];
     }
-    MESSAGE("channel " << c << ": quadgraph / dipole mean " << sd / sr << ", relative RMS " << std::sqrt(d2 / r2));
-    // Against the path tracer (docs/accuracy/quadgraph.md, marble 30 mm) QuadGraph gives 1.03-1.04 and the
-    // dipole 0.93: their ratio, 1.11, is what the two should show here too.
+    MESSAGE("channel " << c << ": quadgraph / dipole mean " << sd / sr << ", relative RMS "
+                       << std::sqrt(d2 / r2));
+    // Against the path tracer (docs/accuracy/quadgraph.md, marble 30 mm) QuadGraph gives 1.03-1.04
+    // and the dipole 0.93: their ratio, 1.11, is what the two should show here too.
     CHECK(sd / sr == doctest::Approx(1.11).epsilon(0.05));
     CHECK(std::sqrt(d2 / r2) < 0.2);
   }

@@ -26,12 +26,15 @@ double midRowError(const atlas::DynamicRdTable& table) {
 }
 }  // namespace
 
-TEST_CASE("Dynamic Rd table (Sec. 5.1): skin1 -> marble, 10 -> 30 mm; error falls as rows are added") {
+TEST_CASE(
+    "Dynamic Rd table (Sec. 5.1): skin1 -> marble, 10 -> 30 mm, error falls as rows are added") {
   const auto a = atlas::settingOf(*optics::findMaterial("skin1"), 1.0);
   const auto b = atlas::settingOf(*optics::findMaterial("marble"), 3.0);
   std::vector<double> errors;
-  for (std::size_t rows : {4, 8, 16, 64}) errors.push_back(midRowError(atlas::DynamicRdTable(a, b, 20.0, rows, 4096)));
-  INFO("mid-row relative error at 4, 8, 16, 64 rows: " << errors[0] << " " << errors[1] << " " << errors[2] << " " << errors[3]);
+  for (std::size_t rows : {4, 8, 16, 64})
+    errors.push_back(midRowError(atlas::DynamicRdTable(a, b, 20.0, rows, 4096)));
+  INFO("mid-row relative error at 4, 8, 16, 64 rows: " << errors[0] << " " << errors[1] << " "
+                                                       << errors[2] << " " << errors[3]);
   // Linear interpolation in t of an exponential tail: second order only once rows resolve the decay
   // rate's change (measured 1.09, 0.43, 0.17, 0.020: 8.5x from 16 to 64 rows).
   CHECK(errors[1] < errors[0] / 2);
@@ -41,17 +44,19 @@ TEST_CASE("Dynamic Rd table (Sec. 5.1): skin1 -> marble, 10 -> 30 mm; error fall
 }
 
 TEST_CASE("Dynamic Rd table: the k^2 factor keeps total reflectance under scaling") {
-  // Same material, twice the size: int_0^R T(r, 1) 2 pi r dr = int_0^{2R} Rd(r) 2 pi r dr (r -> 2r).
+  // Same material, twice the size: int_0^R T(r, 1) 2 pi r dr = int_0^{2R} Rd(r) 2 pi r dr (r ->
+  // 2r).
   const auto m = atlas::settingOf(*optics::findMaterial("ketchup"), 1.0);
   auto big = m;
   big.sizeScale = 2.0;
   const atlas::DynamicRdTable table(m, big, 10.0, 8, 8192);
   const auto d = optics::Dipole<double>::make(m.sigmaA, m.sigmaSPrime, m.eta);
   for (int c = 0; c < 3; ++c) {
-    const double integral =
-        test::integrate([&](double r) { return table.exact(r, 1.0)[c] * 2 * optics::kPi * r; }, 0, 4.0, 1e-12);
+    const double integral = test::integrate(
+        [&](double r) { return table.exact(r, 1.0)[c] * 2 * optics::kPi * r; }, 0, 4.0, 1e-12);
     CHECK(integral == doctest::Approx(d.channel[c].cumulative(8.0)).epsilon(1e-6));
-    const double tabulated = test::integrate([&](double r) { return table(r, 1.0)[c] * 2 * optics::kPi * r; }, 0, 4.0, 1e-10);
+    const double tabulated = test::integrate(
+        [&](double r) { return table(r, 1.0)[c] * 2 * optics::kPi * r; }, 0, 4.0, 1e-10);
     CHECK(tabulated == doctest::Approx(d.channel[c].cumulative(8.0)).epsilon(2e-3));
   }
   CHECK(table(11.0, 0.5) == optics::Rgb<double>(0));

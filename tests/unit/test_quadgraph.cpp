@@ -1,5 +1,6 @@
-// The QuadGraph core without TetGen: a box cut into Kuhn tets (6 per cell) is a valid tet mesh whose
-// corners and edges give tets with 2 and 3 boundary faces, so the split of Fig. 4 is exercised.
+// The QuadGraph core without TetGen: a box cut into Kuhn tets (6 per cell) is a valid tet mesh
+// whose corners and edges give tets with 2 and 3 boundary faces, so the split of Fig. 4 is
+// exercised.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -25,7 +26,8 @@ scene::TetMesh kuhnBox(int n, double h) {
   for (int k = 0; k <= n; ++k)
     for (int j = 0; j <= n; ++j)
       for (int i = 0; i <= n; ++i) m.positions.push_back(glm::dvec3(i, j, k) * h);
-  static const int kPaths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  static const int kPaths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
+                                   {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
@@ -43,7 +45,8 @@ scene::TetMesh kuhnBox(int n, double h) {
     for (int f = 0; f < 4; ++f) ++count[quadgraph::detail::sortedKey(quadgraph::tetFace(t, f))];
   for (const auto& [key, c] : count)
     if (c == 1) {
-      const glm::dvec3 centre = (m.positions[key[0]] + m.positions[key[1]] + m.positions[key[2]]) / 3.0;
+      const glm::dvec3 centre =
+          (m.positions[key[0]] + m.positions[key[1]] + m.positions[key[2]]) / 3.0;
       std::uint32_t side = 0;
       for (int a = 0; a < 3; ++a) {
         if (centre[a] < 1e-9) side = std::uint32_t(2 * a);
@@ -55,11 +58,15 @@ scene::TetMesh kuhnBox(int n, double h) {
   return m;
 }
 
-quadgraph::NodeMedium homogeneous(const quadgraph::QuadGraph& g, double sigmaA, double sigmaSPrime) {
-  return quadgraph::sampleMedium(g, [&](const glm::dvec3&) { return std::pair<double, double>{sigmaA, sigmaSPrime}; });
+quadgraph::NodeMedium homogeneous(const quadgraph::QuadGraph& g, double sigmaA,
+                                  double sigmaSPrime) {
+  return quadgraph::sampleMedium(g, [&](const glm::dvec3&) {
+    return std::pair<double, double>{sigmaA, sigmaSPrime};
+  });
 }
 
-std::vector<double> solveTight(const quadgraph::DiffusionSystem<double>& sys, const std::vector<double>& b) {
+std::vector<double> solveTight(const quadgraph::DiffusionSystem<double>& sys,
+                               const std::vector<double>& b) {
   std::vector<double> phi(sys.nodeCount, 0.0);
   quadgraph::SolveOptions o;
   o.tolerance = 1e-12;
@@ -67,7 +74,8 @@ std::vector<double> solveTight(const quadgraph::DiffusionSystem<double>& sys, co
   return phi;
 }
 
-/// |sum_s b_s (Q_s - phi_s)| / sum_s b_s Q_s: what enters minus what leaves, relative; 0 when mu = 0.
+/// |sum_s b_s (Q_s - phi_s)| / sum_s b_s Q_s: what enters minus what leaves, relative; 0 when mu =
+/// 0.
 double energyImbalance(const quadgraph::DiffusionSystem<double>& sys, const std::vector<double>& q,
                        const std::vector<double>& phi) {
   double inflow = 0, balance = 0;
@@ -81,7 +89,9 @@ double energyImbalance(const quadgraph::DiffusionSystem<double>& sys, const std:
 
 }  // namespace
 
-TEST_CASE("QuadGraph of a box: every tet keeps at most one boundary face, inner nodes have 4 neighbours") {
+TEST_CASE(
+    "QuadGraph of a box: every tet keeps at most one boundary face, inner nodes have 4 "
+    "neighbours") {
   const auto mesh = kuhnBox(4, 2.5);
   const auto g = quadgraph::buildQuadGraph(mesh);
   CHECK(g.splitParents.size() > 0);  // the box's corner and edge tets were split
@@ -116,7 +126,8 @@ TEST_CASE("QuadGraph of a box: every tet keeps at most one boundary face, inner 
   CHECK(g.minFaceDistanceRatio() > 0);
 }
 
-TEST_CASE("Both stencils give a symmetric system; the finite-volume one conserves energy when mu = 0") {
+TEST_CASE(
+    "Both stencils give a symmetric system, the finite-volume one conserves energy when mu = 0") {
   auto g = quadgraph::buildQuadGraph(kuhnBox(5, 2.0));
   quadgraph::relax(g, 3);
   CHECK(g.minFaceDistanceRatio() > 0);
@@ -129,18 +140,22 @@ TEST_CASE("Both stencils give a symmetric system; the finite-volume one conserve
     std::map<std::pair<std::uint32_t, std::uint32_t>, double> w;
     for (std::size_t i = 0; i < sys.nodeCount; ++i)
       for (int k = 0; k < 4; ++k)
-        if (sys.neighbour[4 * i + k] != i) w[{std::uint32_t(i), sys.neighbour[4 * i + k]}] = sys.weight[4 * i + k];
-    for (const auto& [edge, c] : w) CHECK(c == doctest::Approx(w.at({edge.second, edge.first})).epsilon(1e-12));
-    CHECK(sys.diagonalDominanceMargin() >= -1e-12);  // spectralon-like: Laplace's equation, weakly dominant
+        if (sys.neighbour[4 * i + k] != i)
+          w[{std::uint32_t(i), sys.neighbour[4 * i + k]}] = sys.weight[4 * i + k];
+    for (const auto& [edge, c] : w)
+      CHECK(c == doctest::Approx(w.at({edge.second, edge.first})).epsilon(1e-12));
+    CHECK(sys.diagonalDominanceMargin() >=
+          -1e-12);  // spectralon-like: Laplace's equation, weakly dominant
 
     const auto b = sys.rhs(q);
     const auto phi = solveTight(sys, b);
     if (stencil == quadgraph::Stencil::FiniteVolume) {
-      // No absorption: what enters leaves. Sum_s b_s (Q_s - phi_s) = 0, and b_s = A_f / (2A) here, so the
-      // area-weighted mean of phi over the surface equals that of Q.
+      // No absorption: what enters leaves. Sum_s b_s (Q_s - phi_s) = 0, and b_s = A_f / (2A) here,
+      // so the area-weighted mean of phi over the surface equals that of Q.
       CHECK(energyImbalance(sys, q, phi) < 1e-8);
-      // And the radiosity Eq. 7 hands to the renderer carries exactly that light out: sum A B = sum A q.
-      // (Eq. 7 as printed, without the transmitted fraction 1 - Fdr, would give 1.8x at eta 1.3.)
+      // And the radiosity Eq. 7 hands to the renderer carries exactly that light out: sum A B = sum
+      // A q. (Eq. 7 as printed, without the transmitted fraction 1 - Fdr, would give 1.8x at
+      // eta 1.3.)
       const auto radiosity = quadgraph::surfaceRadiosity(sys, phi, q);
       double in = 0, out = 0;
       for (std::size_t s = 0; s < q.size(); ++s) {
@@ -153,7 +168,7 @@ TEST_CASE("Both stencils give a symmetric system; the finite-volume one conserve
   }
 }
 
-TEST_CASE("Jacobi, SOR and CG reach the same solution; the residual bound holds") {
+TEST_CASE("Jacobi, SOR and CG reach the same solution, the residual bound holds") {
   auto g = quadgraph::buildQuadGraph(kuhnBox(5, 2.0));
   const auto sys = quadgraph::assemble(g, homogeneous(g, 0.05, 1.0), 1.4);
   std::vector<double> q(g.surfaceCount());
@@ -169,11 +184,14 @@ TEST_CASE("Jacobi, SOR and CG reach the same solution; the residual bound holds"
       for (int k = 0; k < 4; ++k) {
         const std::uint32_t j = sys.neighbour[4 * i + k];
         if (j == i) continue;
-        const auto pos = std::find(colours.colourOrder.begin(), colours.colourOrder.end(), j) - colours.colourOrder.begin();
-        CHECK_FALSE((std::size_t(pos) >= colours.colourStart[c] && std::size_t(pos) < colours.colourStart[c + 1]));
+        const auto pos = std::find(colours.colourOrder.begin(), colours.colourOrder.end(), j) -
+                         colours.colourOrder.begin();
+        CHECK_FALSE((std::size_t(pos) >= colours.colourStart[c] &&
+                     std::size_t(pos) < colours.colourStart[c + 1]));
       }
     }
-  for (auto solver : {quadgraph::Solver::Jacobi, quadgraph::Solver::Sor, quadgraph::Solver::ConjugateGradient}) {
+  for (auto solver :
+       {quadgraph::Solver::Jacobi, quadgraph::Solver::Sor, quadgraph::Solver::ConjugateGradient}) {
     std::vector<double> phi;
     quadgraph::SolveOptions o;
     o.tolerance = 1e-9;
@@ -182,28 +200,34 @@ TEST_CASE("Jacobi, SOR and CG reach the same solution; the residual bound holds"
     CHECK(rep.converged);
     CHECK(sys.relativeResidual(phi, b) <= 1e-9 * 1.0001);
     double err = 0, norm = 0;
-    for (std::size_t i = 0; i < phi.size(); ++i) err += (phi[i] - exact[i]) * (phi[i] - exact[i]), norm += exact[i] * exact[i];
+    for (std::size_t i = 0; i < phi.size(); ++i)
+      err += (phi[i] - exact[i]) * (phi[i] - exact[i]), norm += exact[i] * exact[i];
     CHECK(std::sqrt(err / norm) < 1e-6);
   }
 }
 
-TEST_CASE("Extreme media stay diagonally dominant and finite: spectralon, dense cream at 100 mm, Coke's zero scattering") {
+TEST_CASE(
+    "Extreme media stay diagonally dominant and finite: spectralon, dense cream at 100 mm, Coke's "
+    "zero scattering") {
   for (const char* name : {"spectralon", "cream", "coke"}) {
     const optics::Material mat = *optics::findMaterial(name);
     for (double size : {0.01, 100.0}) {
       auto g = quadgraph::buildQuadGraph(kuhnBox(4, size / 4));
       for (int c = 0; c < 3; ++c) {
-        const auto sys = quadgraph::assemble(g, homogeneous(g, mat.sigmaA[c], mat.sigmaSPrime[c]), mat.eta);
+        const auto sys =
+            quadgraph::assemble(g, homogeneous(g, mat.sigmaA[c], mat.sigmaSPrime[c]), mat.eta);
         INFO(name << " " << size << " mm channel " << c);
         CHECK(sys.diagonalDominanceMargin() >= -1e-12);
         std::vector<double> q(g.surfaceCount(), 1.0), phi;
         quadgraph::SolveOptions o;
         o.tolerance = 1e-8;
-        const auto rep = quadgraph::solve(quadgraph::Solver::ConjugateGradient, sys, {}, sys.rhs(q), phi, o);
+        const auto rep =
+            quadgraph::solve(quadgraph::Solver::ConjugateGradient, sys, {}, sys.rhs(q), phi, o);
         CHECK(rep.converged);
         for (double v : phi) REQUIRE(std::isfinite(v));
         std::size_t clamped = 0;
-        for (double v : quadgraph::surfaceRadiosity(sys, phi, q, &clamped)) REQUIRE((std::isfinite(v) && v >= 0));
+        for (double v : quadgraph::surfaceRadiosity(sys, phi, q, &clamped))
+          REQUIRE((std::isfinite(v) && v >= 0));
       }
     }
   }
@@ -215,14 +239,17 @@ TEST_CASE("Deforming the vertices recomputes the geometry as a rebuild would") {
   std::vector<glm::dvec3> moved(mesh.positions.size());
   for (std::size_t v = 0; v < moved.size(); ++v) {
     const glm::dvec3 p = mesh.positions[v];
-    moved[v] = glm::dvec3(2 * p.x + 0.1 * p.y * p.y, 1.5 * p.y, p.z + 0.2 * p.x);  // a smooth shear + stretch
+    moved[v] = glm::dvec3(2 * p.x + 0.1 * p.y * p.y, 1.5 * p.y,
+                          p.z + 0.2 * p.x);  // a smooth shear + stretch
   }
   g.deform(moved);
   mesh.positions = moved;
   const auto rebuilt = quadgraph::buildQuadGraph(mesh);
   REQUIRE(rebuilt.nodeCount() == g.nodeCount());
-  for (std::size_t n = 0; n < g.innerCount(); ++n) CHECK(glm::distance(g.positions[n], rebuilt.positions[n]) < 1e-12);
-  for (std::size_t e = 0; e < g.faceArea.size(); ++e) CHECK(g.faceArea[e] == doctest::Approx(rebuilt.faceArea[e]).epsilon(1e-12));
+  for (std::size_t n = 0; n < g.innerCount(); ++n)
+    CHECK(glm::distance(g.positions[n], rebuilt.positions[n]) < 1e-12);
+  for (std::size_t e = 0; e < g.faceArea.size(); ++e)
+    CHECK(g.faceArea[e] == doctest::Approx(rebuilt.faceArea[e]).epsilon(1e-12));
   CHECK_THROWS_AS(g.deform({glm::dvec3(0)}), std::invalid_argument);
 }
 
@@ -233,7 +260,8 @@ TEST_CASE("Block packing and shuffling renumber the nodes without changing the s
     std::vector<double> q(graph.surfaceCount());
     for (std::size_t s = 0; s < q.size(); ++s) q[s] = 1 + graph.positions[graph.innerCount() + s].z;
     const auto phi = solveTight(sys, sys.rhs(q));
-    std::map<std::tuple<long, long, long>, double> byPosition;  // position -> flux, order independent
+    std::map<std::tuple<long, long, long>, double>
+        byPosition;  // position -> flux, order independent
     for (std::size_t n = 0; n < phi.size(); ++n) {
       const glm::dvec3 p = graph.positions[n] * 1e6;
       byPosition[{std::lround(p.x), std::lround(p.y), std::lround(p.z)}] = phi[n];
@@ -248,7 +276,8 @@ TEST_CASE("Block packing and shuffling renumber the nodes without changing the s
   for (const auto* other : {&packed, &shuffled}) {
     const auto after = solveAt(*other);
     REQUIRE(after.size() == before.size());
-    for (const auto& [key, value] : before) CHECK(after.at(key) == doctest::Approx(value).epsilon(1e-9));
+    for (const auto& [key, value] : before)
+      CHECK(after.at(key) == doctest::Approx(value).epsilon(1e-9));
   }
 }
 
@@ -287,11 +316,13 @@ TEST_CASE("The analytic diffusion sphere satisfies its ODE and boundary conditio
       const double h = 1e-3;
       const double d1 = (s.flux(r + h) - s.flux(r - h)) / (2 * h);
       const double d2 = (s.flux(r + h) - 2 * s.flux(r) + s.flux(r - h)) / (h * h);
-      CHECK(kappa * (d2 + 2 * d1 / r) == doctest::Approx(sigmaA * s.flux(r)).epsilon(1e-4).scale(Q * 1e-6));
+      CHECK(kappa * (d2 + 2 * d1 / r) ==
+            doctest::Approx(sigmaA * s.flux(r)).epsilon(1e-4).scale(Q * 1e-6));
     }
     const double h = 1e-5;
     const double dR = (s.flux(R) - s.flux(R - h)) / h;
-    CHECK(s.flux(R) + 2 * optics::boundaryMismatch(eta) * kappa * dR == doctest::Approx(Q).epsilon(1e-3));
+    CHECK(s.flux(R) + 2 * optics::boundaryMismatch(eta) * kappa * dR ==
+          doctest::Approx(Q).epsilon(1e-3));
     if (sigmaA == 0) CHECK(s.flux(3.0) == doctest::Approx(Q).epsilon(1e-12));
     CHECK(std::isfinite(s.flux(0)));
   }
@@ -301,7 +332,9 @@ TEST_CASE("The analytic diffusion sphere satisfies its ODE and boundary conditio
   CHECK(std::isfinite(huge.surfaceRadiosity()));
 }
 
-TEST_CASE("A scanned volume as the medium: sigma from a VoxelGrid, energy still conserved, both halves differ") {
+TEST_CASE(
+    "A scanned volume as the medium: sigma from a VoxelGrid, energy still conserved, both halves "
+    "differ") {
   auto g = quadgraph::buildQuadGraph(kuhnBox(6, 1.0));
   scene::VoxelGrid density;  // 2 x 1 x 1 voxels over the box: left half 1, right half 8 (denser)
   density.dims = {2, 1, 1};
@@ -310,25 +343,30 @@ TEST_CASE("A scanned volume as the medium: sigma from a VoxelGrid, energy still 
   density.values = {1.0f, 8.0f};
   const auto medium = quadgraph::sampleMedium(g, [&](const glm::dvec3& p) {
     const double d = density.sample(p);
-    return std::pair<double, double>{0.0, 0.5 * d};  // no absorption: a heterogeneous Laplace problem
+    return std::pair<double, double>{0.0,
+                                     0.5 * d};  // no absorption: a heterogeneous Laplace problem
   });
-  CHECK(*std::max_element(medium.kappa.begin(), medium.kappa.end()) > 7 * *std::min_element(medium.kappa.begin(), medium.kappa.end()));
+  CHECK(*std::max_element(medium.kappa.begin(), medium.kappa.end()) >
+        7 * *std::min_element(medium.kappa.begin(), medium.kappa.end()));
   const auto sys = quadgraph::assemble(g, medium, 1.3);
   CHECK(sys.diagonalDominanceMargin() >= -1e-12);
   std::vector<double> q(g.surfaceCount(), 0.0);
-  for (std::size_t s = 0; s < q.size(); ++s) q[s] = g.surfaceSource[s] == 0 ? 1.0 : 0.0;  // light on x = 0
+  for (std::size_t s = 0; s < q.size(); ++s)
+    q[s] = g.surfaceSource[s] == 0 ? 1.0 : 0.0;  // light on x = 0
   const auto phi = solveTight(sys, sys.rhs(q));
   CHECK(energyImbalance(sys, q, phi) < 1e-8);
   for (double v : phi) REQUIRE((std::isfinite(v) && v >= 0));
 }
 
-TEST_CASE("Sec. 5.3 display surface: the surface nodes triangulated, closed, outward, genus kept, follows deform()") {
+TEST_CASE(
+    "Sec. 5.3 display surface: the surface nodes triangulated, closed, outward, genus kept, "
+    "follows deform()") {
   auto g = quadgraph::buildQuadGraph(kuhnBox(3, 2.0));
   quadgraph::relax(g, 2);
   const auto surface = quadgraph::triangulateSurfaceNodes(g);
   CHECK(surface.openFans == 0);
-  // Euler: F nodes, 2F - 4 triangles for a genus-0 boundary; every edge in exactly two triangles, once
-  // in each direction (a closed, consistently oriented 2-manifold).
+  // Euler: F nodes, 2F - 4 triangles for a genus-0 boundary; every edge in exactly two triangles,
+  // once in each direction (a closed, consistently oriented 2-manifold).
   const std::size_t nodes = g.surfaceCount();
   CHECK(surface.triangles.size() == 2 * nodes - 4);
   std::map<std::pair<unsigned, unsigned>, int> directed;
@@ -343,20 +381,24 @@ TEST_CASE("Sec. 5.3 display surface: the surface nodes triangulated, closed, out
     CHECK(count == 1);
     CHECK(directed.count({edge.second, edge.first}) == 1);
   }
-  // Outward: the enclosed volume is positive and a little below the box's 216 mm^3 (nodes sit on faces, the
-  // dual surface cuts the corners), and every vertex is a node on the box's surface.
+  // Outward: the enclosed volume is positive and a little below the box's 216 mm^3 (nodes sit on
+  // faces, the dual surface cuts the corners), and every vertex is a node on the box's surface.
   const auto volumeOf = [](const scene::TriangleMesh& m) {
     double v = 0;
     for (const auto& t : m.triangles)
-      v += glm::dot(glm::dvec3(m.positions[t.x]), glm::cross(glm::dvec3(m.positions[t.y]), glm::dvec3(m.positions[t.z]))) / 6;
+      v += glm::dot(glm::dvec3(m.positions[t.x]),
+                    glm::cross(glm::dvec3(m.positions[t.y]), glm::dvec3(m.positions[t.z]))) /
+           6;
     return v;
   };
   const auto mesh = surface.mesh(g);
   const double volume = volumeOf(mesh);
   CHECK(volume > 0.8 * 216);
   CHECK(volume < 216);
-  // After a deformation (a stretch by 2 along x) the same triangles at the moved nodes enclose twice the volume.
-  std::vector<glm::dvec3> moved(g.vertices.begin(), g.vertices.begin() + std::ptrdiff_t(g.inputVertexCount));
+  // After a deformation (a stretch by 2 along x) the same triangles at the moved nodes enclose
+  // twice the volume.
+  std::vector<glm::dvec3> moved(g.vertices.begin(),
+                                g.vertices.begin() + std::ptrdiff_t(g.inputVertexCount));
   for (auto& p : moved) p.x *= 2;
   g.deform(moved);
   CHECK(volumeOf(surface.mesh(g)) == doctest::Approx(2 * volume).epsilon(1e-9));

@@ -75,7 +75,7 @@ TEST_CASE("Voxelising: a voxel is inside exactly when its centre is inside the m
 }
 
 TEST_CASE(
-    "Surface voxels: the medium's voxels that touch the outside, numbered; cavity walls excluded") {
+    "Surface voxels: the medium's voxels that touch the outside, numbered, cavity walls excluded") {
   const auto mesh = scene::shapes::cubeWithCavity(0.6);
   voxel::MediaGrid g = voxel::gridAround(mesh, 30);
   voxel::fillInside(g, mesh, 1);
