@@ -1,7 +1,8 @@
 # Script mode (cmake -P): embeds GLSL files into one C++ header, with the constants of
 # include/lucent/optics/constants.hpp translated to GLSL, so the shaders never restate a number.
 #   -DCONSTANTS_HEADER=<constants.hpp> -DOUTPUT=<header> -DGLSL_FILES=<a;b;...>
-# Every 'inline constexpr double kName = value;' becomes 'const float kName = value;' in kConstants;
+# Every 'inline constexpr double kName = value;' becomes 'const float kName = value;' in kConstants,
+# every 'inline constexpr unsigned kName = valueu;' 'const uint kName = valueu;';
 # shaders/foo_bar.frag becomes lucent::glsl::kFooBarFrag.
 file(STRINGS "${CONSTANTS_HEADER}" constant_lines REGEX "^inline constexpr double k[A-Za-z0-9]+ = [^;]+;")
 set(constants "")
@@ -12,6 +13,11 @@ foreach(line IN LISTS constant_lines)
     string(APPEND value ".0")
   endif()
   string(APPEND constants "const float ${name} = ${value};\n")
+endforeach()
+file(STRINGS "${CONSTANTS_HEADER}" unsigned_lines REGEX "^inline constexpr unsigned k[A-Za-z0-9]+ = [0-9a-fA-Fx]+u;")
+foreach(line IN LISTS unsigned_lines)
+  string(REGEX REPLACE "^inline constexpr unsigned (k[A-Za-z0-9]+) = ([0-9a-fA-Fx]+u);.*" "const uint \\1 = \\2;" glsl "${line}")
+  string(APPEND constants "${glsl}\n")
 endforeach()
 if(constants STREQUAL "")
   message(FATAL_ERROR "embed_glsl: no constants found in ${CONSTANTS_HEADER}")

@@ -1,14 +1,20 @@
-// A VTK program turns on translucent rendering with one render pass: vtkLucentPass around VTK's usual
-// render steps. Every opaque surface becomes skin (or another measured material), lit by the scene's
-// light; here the light is behind the object, so thin parts glow. With --sweep it prints the frame time
-// for several sample counts (the accuracy / time knob of the GPU path).
+// A VTK program turns on translucent rendering with one render pass: vtkLucentPass around VTK's
+// usual render steps. Every opaque surface becomes skin (or another measured material), lit by the
+// scene's light; here the light is behind the object, so thin parts glow. --technique picks the GPU
+// twin (tsis, the default, or taulut), --knob sets its knobs; with --sweep it prints the frame time
+// over the technique's own default sweep (`lucent techniques` lists it), the accuracy / time knob
+// of the GPU path. --shape cube-cavity renders the cube with a spherical cavity of Mochida et al.
+// 2016.
 //
-//   build/examples/vtk_translucent_pass [OUT.png] [--size PX] [--samples N] [--sweep]
+//   build/examples/vtk_translucent_pass [OUT.png] [--size PX] [--technique NAME] [--material NAME]
+//       [--knob NAME=VALUE]... [--shape torus|cube-cavity] [--size-mm MM] [--sweep] [--frames N]
 //   (needs a display or xvfb-run -a)
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -23,27 +29,87 @@
 #include <vtkSuperquadricSource.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <lucent/scene/shapes.hpp>
+#include <lucent/technique/core_techniques.hpp>
+
+#include "lucentPolyDataMesh.h"
 #include "vtkLucentPass.h"
 
-int main(int argc, char** argv) {
-  std::string out = "translucent-pass.png";
-  int size = 512, samples = 1024;
+namespace {
+struct Options {
+  std::string out = "translucent-pass.png", technique = "tsis", material = "skin1", shape = "torus";
+  int size = 512, frames = 5;
+  double sizeMm = 30;
   bool sweep = false;
+  std::vector<std::pair<std::string, std::string>> knobs;
+};
+
+Options parse(int argc, char** argv) {
+  Options o;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--size" && i + 1 < argc) size = std::atoi(argv[++i]);
-    else if (a == "--samples" && i + 1 < argc) samples = std::atoi(argv[++i]);
-    else if (a == "--sweep") sweep = true;
-    else out = a;
+    const bool more = i + 1 < argc;
+    if (a == "--size" && more)
+      o.size = std::atoi(argv[++i]);
+    else if (a == "--frames" && more)
+      o.frames = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--technique" && more)
+      o.technique = argv[++i];
+    else if (a == "--material" && more)
+      o.material = argv[++i];
+    else if (a == "--shape" && more)
+      o.shape = argv[++i];
+    else if (a == "--size-mm" && more)
+      o.sizeMm = std::atof(argv[++i]);
+    else if (a == "--sweep")
+      o.sweep = true;
+    else if (a == "--knob" && more) {
+      const std::string kv = argv[++i];
+      const auto eq = kv.find('=');
+      if (eq == std::string::npos) {
+        std::fprintf(stderr, "vtk_translucent_pass: --knob %s: give NAME=VALUE\n", kv.c_str());
+        std::exit(2);
+      }
+      o.knobs.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
+    } else
+      o.out = a;
   }
+  return o;
+}
 
-  vtkNew<vtkSuperquadricSource> shape;  // a torus-like superquadric with thin and thick parts
+/// The torus-like superquadric (thin and thick parts), or the paper's cube with a cavity.
+vtkSmartPointer<vtkPolyData> shapeOf(const std::string& name) {
+  if (name == "cube-cavity")
+    return lucent::vtkadapter::polyDataOf(lucent::scene::shapes::cubeWithCavity(0.6));
+  vtkNew<vtkSuperquadricSource> shape;
   shape->ToroidalOn();
   shape->SetThickness(0.35);
   shape->SetThetaResolution(96);
   shape->SetPhiResolution(48);
+  shape->Update();
+  return shape->GetOutput();
+}
+
+/// Milliseconds per frame: each frame redoes every per-frame stage (the light or the object may
+/// move); the camera orbits to defeat caching. The first frame (shaders, prepare) is not counted.
+double frameMs(vtkRenderWindow* window, vtkRenderer* renderer, int frames) {
+  window->Render();
+  const auto start = std::chrono::steady_clock::now();
+  for (int f = 0; f < frames; ++f) {
+    renderer->GetActiveCamera()->Azimuth(2);
+    window->Render();
+  }
+  window->WaitForCompletion();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+             .count() /
+         frames;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options o = parse(argc, argv);
   vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(shape->GetOutputPort());
+  mapper->SetInputData(shapeOf(o.shape));
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   actor->GetProperty()->SetDiffuse(0.0);  // the pass supplies the diffuse (subsurface) part
@@ -66,17 +132,24 @@ int main(int argc, char** argv) {
   vtkNew<vtkRenderStepsPass> steps;
   vtkNew<vtkLucentPass> lucent;
   lucent->SetDelegatePass(steps);
-  lucent->SetMaterial("skin1");
-  lucent->SetSizeMm(30);  // the object's bounding-box diagonal is 30 mm
-  lucent->SetSamples(samples);
-  lucent->SetExposure(12);  // L = Ft B / pi: about pi times darker than the filter's B at the same exposure
+  lucent->SetTechnique(o.technique.c_str());
+  lucent->SetMaterial(o.material.c_str());
+  lucent->SetSizeMm(o.sizeMm);  // the object's bounding-box diagonal
+  if (o.technique == "tsis") lucent->SetSamples(1024);
+  for (const auto& [name, value] : o.knobs)
+    lucent->SetKnob((o.technique + "." + name).c_str(), value.c_str());
+  lucent->SetExposure(12);  // L = Ft B / pi: about pi times darker than the filter's B
   renderer->SetPass(lucent);
 
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->AddRenderer(renderer);
-  window->SetSize(size, size);
+  window->SetSize(o.size, o.size);
+  const auto prepareStart = std::chrono::steady_clock::now();
   window->Render();
+  const double firstMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - prepareStart)
+          .count();
   if (lucent->GetTranslucentActorCount() != 1) {
     std::fprintf(stderr, "vtk_translucent_pass: nothing was shaded: %s\n", lucent->GetLastError());
     return 1;
@@ -84,26 +157,23 @@ int main(int argc, char** argv) {
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   vtkNew<vtkPNGWriter> png;
-  png->SetFileName(out.c_str());
+  png->SetFileName(o.out.c_str());
   png->SetInputConnection(grab->GetOutputPort());
   png->Write();
-  std::printf("%s, %d samples, %dx%d: wrote %s\n", lucent->GetMaterial(), samples, size, size, out.c_str());
+  std::printf("%s, %s, %dx%d: wrote %s (first frame, with prepare: %.0f ms)\n", o.technique.c_str(),
+              lucent->GetMaterial(), o.size, o.size, o.out.c_str(), firstMs);
 
-  if (sweep) {
-    // Each frame redoes every stage (the light or the object may move); the camera orbits to defeat caching.
-    std::printf("%8s %12s %12s\n", "samples", "ms/frame", "frames/s");
-    for (int n : {16, 64, 256, 1024}) {
-      lucent->SetSamples(n);
-      window->Render();  // warm-up: shader compile, atlas
-      const int frames = 5;
-      const auto start = std::chrono::steady_clock::now();
-      for (int f = 0; f < frames; ++f) {
-        renderer->GetActiveCamera()->Azimuth(2);
-        window->Render();
+  if (o.sweep) {
+    const auto registry = lucent::technique::coreRegistry();
+    const lucent::technique::Technique& t = registry.get(o.technique);
+    for (const auto& sweep : t.defaultSweep) {
+      std::printf("%14s %12s %12s\n", sweep.knob.c_str(), "ms/frame", "frames/s");
+      for (const auto& value : sweep.values) {
+        lucent->SetKnob((t.name + "." + sweep.knob).c_str(), value.c_str());
+        const double ms = frameMs(window, renderer, o.frames);
+        std::printf("%14s %12.1f %12.2f\n",
+                    lucent->GetKnob((t.name + "." + sweep.knob).c_str()).c_str(), ms, 1000.0 / ms);
       }
-      window->WaitForCompletion();
-      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() / frames;
-      std::printf("%8d %12.1f %12.2f\n", n, ms, 1000.0 / ms);
     }
   }
   return 0;

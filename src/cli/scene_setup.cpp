@@ -10,6 +10,7 @@
 
 #include <lucent/scene/mesh_check.hpp>
 #include <lucent/scene/shapes.hpp>
+#include <lucent/technique/transfer_function.hpp>
 #include "../io/exr_io.hpp"
 #include "../io/mesh_io.hpp"
 #include "../io/mesh_repair.hpp"
@@ -21,7 +22,6 @@
 #include "../util/error.hpp"
 #include "../util/tbb_parallel.hpp"
 #include "material_options.hpp"
-#include "transfer_function.hpp"
 
 namespace lucent::cli {
 
@@ -265,14 +265,18 @@ void addInnerBodies(const Args& args, Scene& s, const std::string& shape, const 
 /// "--volume FILE[:ARRAY] [--transfer SPEC] --iso X": the scan, its medium, and its isosurface at X
 /// (or, for a label map, where the labels with a material end) as the object's surface.
 std::shared_ptr<const scene::VoxelGrid> readScan(const Args& args, Scene& s,
-                                                 std::optional<ScanMedium>& medium) {
+                                                 std::optional<technique::ScanMedium>& medium) {
   std::string path = args.get("volume"), array;
   const auto colon = path.rfind(':');
   if (!std::filesystem::exists(path) && colon != std::string::npos)
     array = path.substr(colon + 1), path = path.substr(0, colon);
   auto scan = std::make_shared<scene::VoxelGrid>(io::readImageVolume(path, array));
   s.meshName = path;
-  if (args.has("transfer")) medium = parseTransfer("--transfer", args.get("transfer"), scan);
+  if (args.has("transfer")) try {
+      medium = technique::parseTransfer("--transfer", args.get("transfer"), scan);
+    } catch (const technique::RequestError& e) {
+      throw InputError(e.what());
+    }
   if (medium && medium->mask) {
     s.mesh = io::scanIsosurface(*medium->mask, 0.5,
                                 "--volume " + path + " (its labels with a material)");
@@ -292,25 +296,14 @@ std::shared_ptr<const scene::VoxelGrid> readScan(const Args& args, Scene& s,
 /// The scan's medium: the transfer function's coefficients, or (none given) its values normalised
 /// to [0, 1] over their range scaling the material. The object was centred on `centre` and scaled
 /// by `scale`.
-void scanMedium(std::shared_ptr<const scene::VoxelGrid> scan, const std::optional<ScanMedium>& tf,
-                const glm::dvec3& centre, double scale, Scene& s) {
-  if (tf) {
-    s.medium.coefficients = [field = tf->field, centre, scale](const glm::dvec3& p) {
-      return field(p / scale + centre);
-    };
-    s.medium.maxSigmaT = tf->maxSigmaT;
-    s.medium.densityDescription = s.meshName + " through a " + tf->description;
-    return;
-  }
-  const auto [lo, hi] = std::minmax_element(scan->values.begin(), scan->values.end());
-  const double low = *lo, span = double(*hi) - double(*lo);
-  s.medium.density = [scan, low, span, centre, scale](const glm::dvec3& p) {
-    return span > 0 ? std::clamp((scan->sample(p / scale + centre) - low) / span, 0.0, 1.0) : 1.0;
-  };
-  s.medium.densityDescription = s.meshName + " (" + std::to_string(scan->dims.x) + "x" +
-                                std::to_string(scan->dims.y) + "x" + std::to_string(scan->dims.z) +
-                                " voxels, values over [" + std::to_string(low) + ", " +
-                                std::to_string(low + span) + "] normalised to [0, 1])";
+void scanMedium(std::shared_ptr<const scene::VoxelGrid> scan,
+                const std::optional<technique::ScanMedium>& tf, const glm::dvec3& centre,
+                double scale, Scene& s) {
+  const auto scanAt = [centre, scale](const glm::dvec3& p) { return p / scale + centre; };
+  if (tf)
+    technique::transferMedium(*tf, scanAt, s.meshName, s.medium);
+  else
+    technique::normalisedDensity(scan, scanAt, s.meshName, s.medium);
 }
 }  // namespace
 
@@ -360,7 +353,7 @@ Scene buildScene(const Args& args) {
   if (int(args.has("mesh")) + int(args.has("shape")) + int(args.has("volume")) > 1)
     args.fail("give one of --mesh, --shape and --volume");
   std::shared_ptr<const scene::VoxelGrid> scan;
-  std::optional<ScanMedium> transfer;
+  std::optional<technique::ScanMedium> transfer;
   if (args.has("transfer") && !args.has("volume"))
     args.fail("--transfer maps a scan's values: give it with --volume");
   if (args.has("volume")) {

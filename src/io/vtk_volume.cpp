@@ -22,6 +22,7 @@
 #include <vtkXMLImageDataReader.h>
 
 #include "../util/error.hpp"
+#include "lucentScanSurface.h"
 
 namespace lucent::io {
 
@@ -115,7 +116,6 @@ scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arr
                      ": the volume is empty or could not be read; check the file in ParaView");
   const double read[3] = {double(dims[0]), double(dims[1]), double(dims[2])};
   checkVoxelCount(path + ": ", read, "reads", kResampleFix);  // as read, besides as declared
-  const double voxels = read[0] * read[1] * read[2];
   vtkPointData* pd = image->GetPointData();
   vtkDataArray* array = arrayName.empty() ? pd->GetScalars() : pd->GetArray(arrayName.c_str());
   if (!array && arrayName.empty() && pd->GetNumberOfArrays() > 0) array = pd->GetArray(0);
@@ -129,45 +129,11 @@ scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arr
                           ? "none (cell data is not read; convert with Cell Data to Point Data)"
                           : names));
   }
-  double spacing[3], origin[3];
-  image->GetSpacing(spacing);
-  image->GetOrigin(origin);
-  for (int k = 0; k < 3; ++k)
-    if (!std::isfinite(spacing[k]) || !std::isfinite(origin[k]))
-      throw InputError(path +
-                       ": the volume's spacing or origin is not finite; fix the file's header");
-  for (int k = 0; k < 3; ++k)
-    if (!(spacing[k] > 0))
-      throw InputError(path + ": the voxel spacing along axis " + std::to_string(k) + " is " +
-                       std::to_string(spacing[k]) +
-                       "; it must be positive (fix the file's header)");
-  scene::VoxelGrid grid;
-  grid.dims = {dims[0], dims[1], dims[2]};
-  grid.origin = {origin[0], origin[1], origin[2]};
-  grid.spacing = {spacing[0], spacing[1], spacing[2]};
-  const vtkIdType n = array->GetNumberOfTuples();
-  if (double(n) != voxels)
-    throw InputError(path + ": the array '" +
-                     std::string(array->GetName() ? array->GetName() : "scalars") + "' has " +
-                     std::to_string(n) + " values for " + std::to_string(dims[0]) + " x " +
-                     std::to_string(dims[1]) + " x " + std::to_string(dims[2]) +
-                     " voxels; the file's extent and data disagree (re-save it)");
-  grid.values.resize(std::size_t(n));
-  const int components = array->GetNumberOfComponents();
-  for (vtkIdType i = 0; i < n; ++i) {
-    double sum = 0;
-    for (int c = 0; c < components; ++c)
-      sum += array->GetComponent(i, c) * array->GetComponent(i, c);
-    const double v =
-        slope * (components == 1 ? array->GetComponent(i, 0) : std::sqrt(sum)) + intercept;
-    if (!std::isfinite(v))
-      throw InputError(path + ": voxel " + std::to_string(i) + " of '" +
-                       std::string(array->GetName() ? array->GetName() : "scalars") +
-                       "' is not finite; replace NaN/inf (e.g. ParaView's Calculator) before using "
-                       "it as a medium");
-    grid.values[std::size_t(i)] = float(v);  // VTK point ids run x fastest, as VoxelGrid's
+  try {
+    return vtkadapter::voxelGridOf(image, array, path, slope, intercept);
+  } catch (const technique::RequestError& e) {
+    throw InputError(e.what());
   }
-  return grid;
 }
 
 }  // namespace lucent::io

@@ -36,82 +36,13 @@
 #include "raycast/embree_ray_caster.hpp"
 #include "vtkLucentPass.h"
 
-namespace {
-/// One actor, one directional scene light, a camera on +z, the pass around VTK's render steps.
-struct PassScene {
-  vtkNew<vtkPolyDataMapper> mapper;
-  vtkNew<vtkActor> actor;
-  vtkNew<vtkRenderer> renderer;
-  vtkNew<vtkLight> light;
-  vtkNew<vtkRenderStepsPass> steps;
-  vtkNew<vtkLucentPass> pass;
-  vtkNew<vtkRenderWindow> window;
-  int width, height;
+#include "pass_scene.hpp"
 
-  PassScene(vtkPolyData* data, const double towardLight[3], int size) : width(size), height(size) {
-    mapper->SetInputData(data);
-    actor->SetMapper(mapper);
-    actor->GetProperty()->SetDiffuse(0.0);
-    renderer->AddActor(actor);
-    light->SetLightTypeToSceneLight();
-    light->PositionalOff();
-    light->SetFocalPoint(0, 0, 0);
-    light->SetPosition(towardLight);
-    renderer->AddLight(light);
-    pass->SetDelegatePass(steps);
-    pass->KeepFrameOn();
-    renderer->SetPass(pass);
-    window->SetOffScreenRendering(1);
-    window->AddRenderer(renderer);
-    window->SetSize(size, size);
-    renderer->GetActiveCamera()->SetPosition(0, 0, 1);
-    renderer->GetActiveCamera()->SetFocalPoint(0, 0, 0);
-    renderer->ResetCamera();
-  }
-  void render() { window->Render(); }
-  /// The final image, RGB bytes.
-  std::vector<unsigned char> pixels() {
-    vtkNew<vtkUnsignedCharArray> rgb;
-    window->GetPixelData(0, 0, width - 1, height - 1, 0, rgb);
-    return std::vector<unsigned char>(rgb->GetPointer(0), rgb->GetPointer(0) + 3 * width * height);
-  }
-};
-
-vtkSmartPointer<vtkPolyData> sphere(double radius, int resolution) {
-  vtkNew<vtkSphereSource> source;
-  source->SetRadius(radius);
-  source->SetThetaResolution(resolution);
-  source->SetPhiResolution(resolution / 2);
-  source->Update();
-  return source->GetOutput();
-}
-
-/// The mesh the pass itself builds from the data (the one conversion, lucentPolyDataMesh.h).
-lucent::scene::TriangleMesh toMesh(vtkPolyData* data) {
-  return lucent::vtkadapter::meshFromData(data).mesh;
-}
-
-struct Frame {
-  int width = 0, height = 0;
-  std::vector<float> radiance, position, normal;
-  std::size_t covered() const {
-    std::size_t n = 0;
-    for (std::size_t i = 3; i < radiance.size(); i += 4) n += radiance[i] > 0;
-    return n;
-  }
-  bool allFiniteNonNegative() const {
-    for (std::size_t i = 0; i < radiance.size(); ++i)
-      if (!std::isfinite(radiance[i]) || radiance[i] < 0) return false;
-    return true;
-  }
-};
-
-Frame lastFrame(vtkLucentPass* pass) {
-  Frame f;
-  REQUIRE(pass->GetLastFrame(f.width, f.height, f.radiance, f.position, f.normal));
-  return f;
-}
-}  // namespace
+using lucent_test::Frame;
+using lucent_test::lastFrame;
+using lucent_test::PassScene;
+using lucent_test::sphere;
+using lucent_test::toMesh;
 
 TEST_CASE(
     "vtkLucentPass: per-pixel radiance matches the CPU dipole truth on a side-lit skin sphere, and "
@@ -183,7 +114,7 @@ TEST_CASE(
   CHECK(relRms[1][2] < relRms[0][2] / 1.4);
 }
 
-TEST_CASE("vtkLucentPass: a back-lit sphere glows at its rim; without the pass it is black") {
+TEST_CASE("vtkLucentPass: a back-lit sphere glows at its rim, without the pass it is black") {
   const auto data = sphere(5.0, 64);
   const double behind[3] = {0.0, 0.0, -1.0};  // the camera looks from +z
   PassScene scene(data, behind, 96);
@@ -227,7 +158,7 @@ TEST_CASE("vtkLucentPass: a back-lit sphere glows at its rim; without the pass i
   CHECK(redWith > 1.5 * blueWith);  // skin: red travels furthest under the surface
 }
 
-TEST_CASE("vtkLucentPass: hard cases stay finite; bad input is reported, not crashed on") {
+TEST_CASE("vtkLucentPass: hard cases stay finite, bad input is reported, not crashed on") {
   const double side[3] = {1.0, 0.5, 0.5};
   SUBCASE("zero absorption (spectralon), a 1 um and a 1 m object") {
     const auto data = sphere(1.0, 48);

@@ -132,7 +132,7 @@ def check_generated_properties(path):
         if t["capabilities"]["gpu_twin"] == "vtkLucentPass":
             for twin in t["capabilities"]["gpu_twin_knobs"]:
                 knob = next(k for k in t["knobs"] if k["name"] == twin["knob"])
-                check_knob_property(view_proxy, "Lucent" + knob["vtk_name"], knob, twin["max"])
+                check_knob_property(view_proxy, "Lucent" + t["vtk_name"] + knob["vtk_name"], knob, twin["max"])
                 twins += 1
     if twins == 0:
         fail("no technique names vtkLucentPass as its GPU twin")
@@ -163,6 +163,37 @@ for i in range(data.GetNumberOfPoints()):
     (lit if x > 0.4 else unlit if x < -0.4 else []).append(b[0])
 if not (lit and unlit and min(lit) > 10 * max(unlit)):
     fail("the lit side (+x) is not far brighter than the far side")
+# 1b. The volume filter: a scan's isosurface with the scan as the medium. A transfer function of one
+# point is marble's coefficients everywhere, so it must shade as the plain filter shades the same
+# isosurface as marble (both by taulut).
+scan = Wavelet(WholeExtent=[-10, 10, -10, 10, -10, 10])
+volume = LucentTranslucentVolume(Input=scan)
+volume.SelectInputScalars = ["POINTS", "RTData"]
+volume.IsoValue = 150.0
+volume.Material = "marble"
+volume.Transfer = "points:0/0.0021,0.0041,0.0071/2.19,2.62,3.00"
+volume.SizeMm = 20.0
+volume.Technique = "taulut"
+volume.TaulutVoxels = 16
+volume.UpdatePipeline()
+scanned = servermanager.Fetch(volume)
+plain = LucentTranslucent(Input=ExtractSurface(Input=volume))
+plain.Material = "marble"
+plain.SizeMm = 20.0
+plain.Technique = "taulut"
+plain.TaulutVoxels = 16
+plain.UpdatePipeline()
+homogeneous = servermanager.Fetch(plain)
+a, b = scanned.GetPointData().GetArray("Radiosity"), homogeneous.GetPointData().GetArray("Radiosity")
+if a is None or b is None or a.GetNumberOfTuples() != b.GetNumberOfTuples() or a.GetNumberOfTuples() == 0:
+    fail("the volume filter gave no Radiosity, or not on the plain filter's vertices")
+worst = max(abs(a.GetComponent(i, c) - b.GetComponent(i, c)) / max(abs(b.GetComponent(i, c)), 1e-30)
+            for i in range(a.GetNumberOfTuples()) for c in range(3) if b.GetComponent(i, c) > 1e-6)
+if not worst < 1e-4:
+    fail("the volume filter with marble's coefficients differs from marble by %g" % worst)
+print("volume filter: %d vertices, largest relative difference to homogeneous marble %.2g"
+      % (a.GetNumberOfTuples(), worst))
+
 view = CreateView("RenderView")
 view.ViewSize = [512, 512]
 view.OrientationAxesVisibility = 0
@@ -192,7 +223,7 @@ lucent_view.LucentMaterial = "skin1"
 lucent_view.LucentSizeMm = 30.0
 lucent_view.LucentLightDirection = [0.0, 0.5, -1.0]  # from behind, as seen by the camera
 lucent_view.LucentExposure = 16.0
-lucent_view.LucentSamples = 1024
+lucent_view.LucentTsisSamples = 1024
 surface = Show(shape, lucent_view)
 surface.Diffuse = 0.0  # the pass supplies the diffuse (subsurface) part
 surface.Specular = 0.4

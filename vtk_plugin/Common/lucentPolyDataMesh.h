@@ -221,6 +221,18 @@ inline void flip(PolyDataMesh& surface) {
   surface.flipped = !surface.flipped;
 }
 
+/// A lucent mesh as vtkPolyData (points and triangles, nothing welded or turned).
+inline vtkSmartPointer<vtkPolyData> polyDataOf(const scene::TriangleMesh& mesh) {
+  vtkNew<vtkPoints> points;
+  points->SetNumberOfPoints(vtkIdType(mesh.positions.size()));
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+    points->SetPoint(vtkIdType(i), mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z);
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->SetPoints(points);
+  data->SetPolys(detail::polysOf(mesh));
+  return data;
+}
+
 }  // namespace lucent::vtkadapter
 
 #endif

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <thread>
 #include <vector>
 
@@ -23,6 +24,7 @@
 #include <lucent/technique/core_techniques.hpp>
 
 #include "lucentPolyDataMesh.h"
+#include "lucentSmpFor.h"
 #include "lucentSurfaceGather.h"
 #include "vtkLucentRayCaster.h"
 
@@ -45,13 +47,6 @@ std::vector<std::pair<std::string, std::string>> knobProperties() {
 
 unsigned char displayByte(double x) {
   return static_cast<unsigned char>(std::lround(255 * lucent::image::displayEncode(x)));
-}
-
-/// vtkSMPTools as the technique layer's parallel loop.
-void smpFor(std::size_t n, const lucent::util::RangeBody& body) {
-  vtkSMPTools::For(vtkIdType(0), vtkIdType(n), [&](vtkIdType begin, vtkIdType end) {
-    body(std::size_t(begin), std::size_t(end));
-  });
 }
 
 vtkSmartPointer<vtkFloatArray> tupleArray(const char* name, const std::vector<glm::dvec3>& values) {
@@ -194,11 +189,11 @@ Surfaces surfacesOf(vtkDataObject* input, vtkMultiProcessController* controller)
 /// The whole surface in millimetres (scaled about the origin to SizeMm, or as given) and its ray
 /// caster.
 vtkSmartPointer<vtkPolyData> scaleToMillimetres(lucent::scene::TriangleMesh& mesh,
-                                                vtkCellArray* polys, double sizeMm) {
+                                                vtkCellArray* polys, double sizeMm, double& scale) {
   const double diagonal = mesh.bounds().diagonal();
   if (!(diagonal > 0) || !std::isfinite(diagonal))
     throw lt::RequestError("The input has zero or non-finite extent");
-  const double scale = sizeMm > 0 ? sizeMm / diagonal : 1.0;
+  scale = sizeMm > 0 ? sizeMm / diagonal : 1.0;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(vtkIdType(mesh.positions.size()));
@@ -260,6 +255,11 @@ int vtkLucentFilter::RequestData(vtkInformation*, vtkInformationVector** inputVe
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   if (!input || !output) return 0;
+  return this->ShadeSurface(input, output, {});
+}
+
+int vtkLucentFilter::ShadeSurface(vtkDataObject* input, vtkPolyData* output,
+                                  const MediumSetup& medium) {
   // Checked before any work; across processes every rank must agree before the collective gather.
   Request request;
   std::string problem;
@@ -291,15 +291,17 @@ int vtkLucentFilter::RequestData(vtkInformation*, vtkInformationVector** inputVe
     lt::SceneDescription scene;
     scene.meshName = "the filter's input";
     scene.mesh = std::move(surfaces.whole.mesh);
-    const auto millimetres =
-        scaleToMillimetres(scene.mesh, surfaces.whole.triangles->GetPolys(), this->SizeMm);
+    double mmPerUnit = 1;
+    const auto millimetres = scaleToMillimetres(scene.mesh, surfaces.whole.triangles->GetPolys(),
+                                                this->SizeMm, mmPerUnit);
     const vtkLucentRayCaster caster(millimetres);
     scene.vertexNormals = scene.mesh.vertexNormals();
     scene.medium.material = request.material;
+    if (medium) medium(scene.medium, mmPerUnit);
     scene.lights = {
         lucent::scene::DirectionalLight{request.towardLight, glm::dvec3(this->LightIrradiance)}};
     scene.caster = &caster;
-    scene.parallelFor = smpFor;
+    scene.parallelFor = lucent::vtkadapter::smpFor;
     // Progress from the calling thread only (VTK's events are not thread-safe); each stage moves
     // the bar half of the way that is left, so it never goes back.
     const std::thread::id caller = std::this_thread::get_id();

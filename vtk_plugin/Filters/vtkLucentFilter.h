@@ -19,6 +19,7 @@
 #ifndef vtkLucentFilter_h
 #define vtkLucentFilter_h
 
+#include <functional>
 #include <map>
 #include <string>
 
@@ -30,6 +31,7 @@ class vtkMultiProcessController;
 namespace lucent::technique {
 class Registry;
 struct Rendered;
+struct Medium;
 }  // namespace lucent::technique
 #endif
 
@@ -121,6 +123,11 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   int FillInputPortInformation(int port, vtkInformation* info) override;
 #ifndef __VTK_WRAP__
   struct Request;  // material, technique, knobs and light of one run
+  /// Sets the medium beyond the material (a subclass's scan), given millimetres per data unit.
+  using MediumSetup = std::function<void(lucent::technique::Medium&, double mmPerUnit)>;
+  /// Shades `input` (surfaces) into `output`: the checks, the whole surface in millimetres, the
+  /// technique, the arrays. 1 on success; 0 with the error reported.
+  int ShadeSurface(vtkDataObject* input, vtkPolyData* output, const MediumSetup& medium);
   /// Checks the material, technique, knobs and light against the technique's own description.
   Request CheckRequest() const;
   void WriteArrays(vtkPolyData* output, const lucent::technique::Rendered& result) const;

@@ -31,53 +31,18 @@
 
 #include <lucent/optics/dipole.hpp>
 #include <lucent/optics/materials.hpp>
-#include <lucent/technique/texture_space.hpp>
+#include <lucent/technique/core_techniques.hpp>
 
+#include "lucentPassDrawing.h"
+#include "lucentSmpFor.h"
 #include "lucent_glsl.h"
 #include "vtkLucentSurface.h"
+#include "vtkLucentTauLut.h"
 
 vtkStandardNewMacro(vtkLucentPass);
 
 namespace {
-/// The shared GLSL pasted where a stage asks for it (shaders/README.md).
-std::string withSharedGlsl(const char* stage) {
-  std::string source = stage;
-  vtkShaderProgram::Substitute(source, "//LUCENT::Optics",
-                               std::string(lucent::glsl::kConstants) + lucent::glsl::kOpticsGlsl);
-  vtkShaderProgram::Substitute(source, "//LUCENT::Display", lucent::glsl::kDisplayGlsl);
-  return source;
-}
-
-/// Every texture of the pass is read texel for texel: nearest filtering, clamped at the edges.
-vtkSmartPointer<vtkTextureObject> newNearestTexture(vtkOpenGLRenderWindow* window) {
-  auto t = vtkSmartPointer<vtkTextureObject>::New();
-  t->SetContext(window);
-  t->SetMinificationFilter(vtkTextureObject::Nearest);
-  t->SetMagnificationFilter(vtkTextureObject::Nearest);
-  t->SetWrapS(vtkTextureObject::ClampToEdge);
-  t->SetWrapT(vtkTextureObject::ClampToEdge);
-  return t;
-}
-
-vtkSmartPointer<vtkTextureObject> newColorTexture(vtkOpenGLRenderWindow* window, int width,
-                                                  int height) {
-  auto t = newNearestTexture(window);
-  t->Allocate2D(unsigned(width), unsigned(height), 4, VTK_FLOAT);
-  return t;
-}
-
-vtkSmartPointer<vtkTextureObject> newDepthTexture(vtkOpenGLRenderWindow* window, int width,
-                                                  int height) {
-  auto t = newNearestTexture(window);
-  t->AllocateDepth(unsigned(width), unsigned(height), vtkTextureObject::Float32);
-  return t;
-}
-
-vtkSmartPointer<vtkOpenGLFramebufferObject> newFramebuffer(vtkOpenGLRenderWindow* window) {
-  auto f = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-  f->SetContext(window);
-  return f;
-}
+using namespace lucent::vtkpass;
 
 int powerOfTwoAtLeast(int n) {
   int p = 1;
@@ -85,46 +50,48 @@ int powerOfTwoAtLeast(int n) {
   return p;
 }
 
-/// Saves the caller's bindings, binds @p fbo with these attachments for drawing, viewport and
-/// scissor 0,0,w,h (not the renderer's tile origin: inside our own framebuffers the origin is
-/// always 0).
-void beginDrawing(vtkOpenGLState* state, vtkOpenGLFramebufferObject* fbo,
-                  std::initializer_list<vtkTextureObject*> colors, vtkTextureObject* depth,
-                  int width, int height) {
-  fbo->SaveCurrentBindingsAndBuffers();
-  fbo->Bind();
-  unsigned count = 0;
-  for (vtkTextureObject* c : colors) fbo->AddColorAttachment(count++, c);
-  if (depth) fbo->AddDepthAttachment(depth);
-  if (count > 0)
-    fbo->ActivateDrawBuffers(count);
-  else
-    fbo->DeactivateDrawBuffers();
-  state->vtkglViewport(0, 0, width, height);
-  state->vtkglScissor(0, 0, width, height);
+namespace lt = lucent::technique;
+
+const lt::Registry& registry() {
+  static const lt::Registry r = lt::coreRegistry();
+  return r;
 }
 
-/// The pass is tsis's GPU twin: its knob as tsis declares it, with the twin's own upper bound.
-struct TwinKnob {
-  lucent::technique::KnobSpec spec;
-  double max;
+/// The registry's techniques whose GPU twin is this pass, in registry order.
+std::vector<const lt::Technique*> twins() {
+  std::vector<const lt::Technique*> out;
+  for (const auto& t : registry().all())
+    if (t.capabilities.gpuTwin == "vtkLucentPass") out.push_back(&t);
+  return out;
+}
+const lt::Technique* twinNamed(const std::string& name) {
+  for (const lt::Technique* t : twins())
+    if (t->name == name) return t;
+  return nullptr;
+}
+
+/// A knob as the twin takes it: the technique's spec with the twin's own upper bound.
+struct PassKnob {
+  const lt::KnobSpec* spec = nullptr;
+  double max = 0;
 };
-TwinKnob tsisKnob(const std::string& name) {
-  static const lucent::technique::Technique tsis = lucent::technique::tsisTechnique();
-  for (const auto& twin : tsis.capabilities.gpuTwinKnobs)
-    if (twin.knob == name) return {*tsis.knob(name), std::min(tsis.knob(name)->max, twin.max)};
-  throw std::logic_error("tsis declares no GPU twin knob " + name);
-}
-int tsisDefault(const std::string& name) { return std::stoi(tsisKnob(name).spec.defaultValue); }
-int clampToTsis(const std::string& name, int value) {
-  const TwinKnob k = tsisKnob(name);
-  return int(std::clamp(double(value), k.spec.min, k.max));
+PassKnob passKnob(const lt::Technique& t, const std::string& name) {
+  for (const auto& twin : t.capabilities.gpuTwinKnobs)
+    if (twin.knob == name) return {t.knob(name), std::min(t.knob(name)->max, twin.max)};
+  throw std::logic_error(t.name + " declares no GPU twin knob " + name);
 }
 
-void endDrawing(vtkOpenGLFramebufferObject* fbo) {
-  fbo->UnBind();
-  fbo->RestorePreviousBindingsAndBuffers();
+/// A given value clamped to the twin's range (numbers; choices pass as given).
+std::string clampedToTwin(const PassKnob& k, const std::string& value) {
+  if (k.spec->kind != lt::KnobKind::Integer && k.spec->kind != lt::KnobKind::Real) return value;
+  double v = 0;
+  if (!lt::detail::parseReal(value, v)) return value;  // the technique's check reports it
+  v = std::clamp(v, k.spec->min, k.max);
+  char text[64];
+  std::snprintf(text, sizeof text, k.spec->kind == lt::KnobKind::Integer ? "%.0f" : "%.17g", v);
+  return text;
 }
+
 }  // namespace
 
 struct vtkLucentPass::Internals {
@@ -138,8 +105,9 @@ struct vtkLucentPass::Internals {
       sampleWeight;
   vtkOpenGLQuadHelper* samplesQuad = nullptr;
   vtkOpenGLQuadHelper* compositeQuad = nullptr;
-  std::string lightDepthVs, lightDepthFs, atlasVs, atlasFs, shadeVs, shadeFs;
+  std::string lightDepthVs, lightDepthFs, atlasVs, atlasFs, shadeVs, shadeFs, tauShadeFs;
   std::map<vtkActor*, vtkSmartPointer<vtkLucentSurface>> surfaces;
+  std::map<const vtkLucentSurface*, vtkSmartPointer<vtkLucentTauLut>> tauLuts;  ///< taulut's twin
   /// Per surface, the build, material and knobs its range was last checked for: the check copies
   /// the mesh, so it runs when one of them changes, not every frame.
   std::map<const vtkLucentSurface*, std::string> rangeChecked;
@@ -152,7 +120,8 @@ struct vtkLucentPass::Internals {
         atlasVs(lucent::glsl::kAtlasIrradianceVert),
         atlasFs(withSharedGlsl(lucent::glsl::kAtlasIrradianceFrag)),
         shadeVs(lucent::glsl::kTsisShadeVert),
-        shadeFs(withSharedGlsl(lucent::glsl::kTsisShadeFrag)) {}
+        shadeFs(withSharedGlsl(lucent::glsl::kTsisShadeFrag)),
+        tauShadeFs(withSharedGlsl(lucent::glsl::kTaulutShadeFrag)) {}
 };
 
 struct vtkLucentPass::FrameSetup {
@@ -165,23 +134,73 @@ struct vtkLucentPass::FrameSetup {
   glm::mat4 worldToLight{1.0f};  ///< of the actor being shaded
 };
 
-vtkLucentPass::vtkLucentPass()
-    : Impl(new Internals),
-      Samples(tsisDefault("samples")),
-      AtlasResolution(tsisDefault("atlas-resolution")) {}
+vtkLucentPass::vtkLucentPass() : Impl(new Internals) { this->RefreshTsisKnobs(); }
 
-void vtkLucentPass::SetSamples(int n) {
-  n = clampToTsis("samples", n);
-  if (n == this->Samples) return;
-  this->Samples = n;
+void vtkLucentPass::SetTechnique(const char* name) {
+  const std::string value = name ? name : "";
+  if (value == this->Technique) return;
+  this->Technique = value;
   this->Modified();
 }
 
-void vtkLucentPass::SetAtlasResolution(int texels) {
-  texels = clampToTsis("atlas-resolution", texels);
-  if (texels == this->AtlasResolution) return;
-  this->AtlasResolution = texels;
+int vtkLucentPass::GetNumberOfTechniques() { return int(twins().size()); }
+std::string vtkLucentPass::GetTechniqueName(int i) {
+  const auto all = twins();
+  return i >= 0 && i < int(all.size()) ? all[std::size_t(i)]->name : std::string();
+}
+
+void vtkLucentPass::SetKnob(const char* qualifiedName, const char* value) {
+  if (!qualifiedName) return;
+  const std::string v = value ? value : "";
+  auto [it, added] = this->Knobs.emplace(qualifiedName, v);
+  if (!added && it->second == v) return;
+  it->second = v;
+  this->RefreshTsisKnobs();
   this->Modified();
+}
+void vtkLucentPass::SetKnobInteger(const char* qualifiedName, int value) {
+  this->SetKnob(qualifiedName, std::to_string(value).c_str());
+}
+void vtkLucentPass::SetKnobReal(const char* qualifiedName, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  this->SetKnob(qualifiedName, text);
+}
+std::string vtkLucentPass::GetKnob(const char* qualifiedName) const {
+  if (!qualifiedName) return {};
+  if (const auto it = this->Knobs.find(qualifiedName); it != this->Knobs.end()) return it->second;
+  for (const lt::Technique* t : twins())
+    for (const auto& twin : t->capabilities.gpuTwinKnobs)
+      if (t->name + "." + twin.knob == qualifiedName) return t->knob(twin.knob)->defaultValue;
+  return {};
+}
+
+void vtkLucentPass::SetSamples(int n) { this->SetKnobInteger("tsis.samples", n); }
+void vtkLucentPass::SetAtlasResolution(int texels) {
+  this->SetKnobInteger("tsis.atlas-resolution", texels);
+}
+
+lt::KnobValues vtkLucentPass::TwinValues(const lt::Technique& t) const {
+  lt::KnobList given;
+  for (const auto& twin : t.capabilities.gpuTwinKnobs) {
+    const auto it = this->Knobs.find(t.name + "." + twin.knob);
+    if (it != this->Knobs.end())
+      given.emplace_back(twin.knob, clampedToTwin(passKnob(t, twin.knob), it->second));
+  }
+  return t.values(given);
+}
+
+/// tsis's stages read their two knobs as members.
+void vtkLucentPass::RefreshTsisKnobs() {
+  const lt::Technique& tsis = *twinNamed("tsis");
+  lt::KnobValues values;
+  try {
+    values = this->TwinValues(tsis);
+  } catch (const std::exception&) {
+    values = tsis.values();  // a malformed number: the defaults, reported when drawn
+  }
+  this->Samples = int(values.integer("samples"));
+  this->AtlasResolution = int(values.integer("atlas-resolution"));
 }
 
 vtkLucentPass::~vtkLucentPass() {
@@ -212,29 +231,26 @@ void vtkLucentPass::PrintSelf(ostream& os, vtkIndent indent) {
      << indent << "KeepFrame: " << this->KeepFrame << "\n";
 }
 
-void vtkLucentPass::WarnOutsideRange(const vtkLucentSurface& surface) {
-  // tsis's stated range, with the pass's knobs. The CLI and the filter refuse outside it; an
-  // interactive view keeps drawing (finite, but not what tsis promises) and says so once.
-  static const lucent::technique::Technique tsis = lucent::technique::tsisTechnique();
-  const std::string checkedFor = std::to_string(surface.GetBuildCount()) + " " + this->Material +
-                                 " " + std::to_string(this->Samples) + " " +
-                                 std::to_string(this->AtlasResolution);
+void vtkLucentPass::WarnOutsideRange(const vtkLucentSurface& surface, const lt::Technique& t,
+                                     const lt::KnobValues& knobs) {
+  // The technique's stated range, with the pass's knobs. The CLI and the filter refuse outside it;
+  // an interactive view keeps drawing (finite, but not what the technique promises) and says so
+  // once.
+  std::string checkedFor = std::to_string(surface.GetBuildCount()) + " " + this->Material;
+  for (const auto& k : t.knobs) checkedFor += " " + knobs.text(k.name);
   std::string& lastChecked = this->Impl->rangeChecked[&surface];
-  if (lastChecked == checkedFor) return;
+  if (lastChecked == checkedFor || !t.validity) return;
   lastChecked = checkedFor;
   const auto material = lucent::optics::findMaterial(this->Material);
   if (!material) return;
-  lucent::technique::SceneDescription scene;
+  lt::SceneDescription scene;
   scene.mesh = surface.GetMillimetreMesh();
   scene.medium.material = *material;
-  const lucent::technique::KnobValues knobs =
-      tsis.values({{"samples", std::to_string(this->Samples)},
-                   {"atlas-resolution", std::to_string(this->AtlasResolution)}});
-  const std::string why = tsis.validity(scene, knobs);
+  const std::string why = t.validity(scene, knobs);
   if (why.empty() || why == this->LastRangeWarning) return;
   this->LastRangeWarning = why;
-  vtkWarningMacro(<< "vtkLucentPass (tsis's GPU twin) is outside tsis's valid range: " << why
-                  << " (valid for: " << tsis.validRange << ")");
+  vtkWarningMacro(<< "vtkLucentPass (" << t.name << "'s GPU twin) is outside " << t.name
+                  << "'s valid range: " << why << " (valid for: " << t.validRange << ")");
 }
 
 void vtkLucentPass::ReportError(const std::string& message) {
@@ -503,12 +519,71 @@ bool vtkLucentPass::ShadeSurface(vtkOpenGLRenderWindow* window, vtkLucentSurface
   return program != nullptr;
 }
 
+bool vtkLucentPass::ShadeTauLut(vtkOpenGLRenderWindow* window, const lt::Technique& taulut,
+                                const lt::KnobValues& knobs, vtkLucentSurface* surface,
+                                const FrameSetup& frame, int width, int height) {
+  Internals& I = *this->Impl;
+  lt::SceneDescription scene;
+  scene.meshName = "the actor's data";
+  scene.mesh = surface->GetMillimetreMesh();
+  scene.vertexNormals = scene.mesh.vertexNormals();
+  scene.medium.material = *lucent::optics::findMaterial(this->Material);  // SetUpFrame checked it
+  scene.lights = {lucent::scene::DirectionalLight{
+      frame.towardLight,
+      glm::dvec3(frame.irradiance[0], frame.irradiance[1], frame.irradiance[2])}};
+  scene.parallelFor = lucent::vtkadapter::smpFor;
+  // Prepared again only when the geometry or a prepare knob changed; light and material are the
+  // frame's.
+  std::string key = std::to_string(surface->GetBuildCount());
+  for (const auto& k : taulut.knobs)
+    if (k.invalidates == lt::Phase::Prepare) key += " " + k.name + "=" + knobs.text(k.name);
+  auto& lut = I.tauLuts[surface];
+  if (!lut) lut = vtkSmartPointer<vtkLucentTauLut>::New();
+  std::string error;
+  if (!lut->Prepare(window, taulut, scene, knobs, key, error) ||
+      !lut->RenderLightView(window, surface, scene, error)) {
+    this->ReportError("vtkLucentPass (" + taulut.name + "): " + error);
+    return false;
+  }
+  vtkOpenGLState* state = window->GetState();
+  beginDrawing(state, I.translucentFbo,
+               {I.translucentRadiance, I.translucentPosition, I.translucentNormal},
+               I.translucentDepth, width, height);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LESS);
+  state->vtkglDepthMask(GL_TRUE);
+  vtkShaderProgram* program =
+      window->GetShaderCache()->ReadyShaderProgram(I.shadeVs.c_str(), I.tauShadeFs.c_str(), "");
+  if (program) {
+    program->SetUniformMatrix("worldToClip", frame.worldToClip);
+    lut->Shade(window, surface, frame.camera, program);
+  }
+  endDrawing(I.translucentFbo);
+  if (!program) this->ReportError("vtkLucentPass: the taulut shading shader did not compile");
+  return program != nullptr;
+}
+
 bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width,
                                 int height) {
   Internals& I = *this->Impl;
   vtkRenderer* renderer = s->GetRenderer();
   this->ClearTranslucentTargets(window->GetState(), width,
                                 height);  // empty even when nothing is translucent
+  const lt::Technique* twin = twinNamed(this->Technique);
+  if (!twin) {
+    std::string names;
+    for (const lt::Technique* t : twins()) names += (names.empty() ? "" : ", ") + t->name;
+    this->ReportError("vtkLucentPass: technique '" + this->Technique +
+                      "' has no GPU twin here; use one of: " + names);
+    return false;
+  }
+  lt::KnobValues knobs;
+  try {
+    knobs = this->TwinValues(*twin);
+  } catch (const std::exception& e) {
+    this->ReportError(std::string("vtkLucentPass: ") + e.what());
+    return false;
+  }
   FrameSetup frame;
   if (!this->SetUpFrame(renderer, frame)) return false;
 
@@ -529,7 +604,11 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
     if (!surface->Update(actor, this->SizeMm, frame.atlasSize, error))
       continue;  // lines, points: not ours
     ++this->TranslucentActorCount;
-    this->WarnOutsideRange(*surface);
+    this->WarnOutsideRange(*surface, *twin, knobs);
+    if (twin->name == "taulut") {
+      if (!this->ShadeTauLut(window, *twin, knobs, surface, frame, width, height)) return false;
+      continue;
+    }
     if (!this->RenderLightDepth(window, surface, frame) ||
         !this->RenderAtlasIrradiance(window, surface, frame) ||
         !this->DrawImportanceSamples(window, frame) ||
@@ -541,6 +620,10 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
     if (!seen.count(actor)) {
       surface->ReleaseGraphicsResources(window);
       I.rangeChecked.erase(surface.Get());
+      if (auto lut = I.tauLuts.find(surface.Get()); lut != I.tauLuts.end()) {
+        lut->second->ReleaseGraphicsResources(window);
+        I.tauLuts.erase(lut);
+      }
     }
   I.surfaces = std::move(seen);
   return this->TranslucentActorCount > 0;
@@ -654,6 +737,8 @@ void vtkLucentPass::ReleaseGraphicsResources(vtkWindow* w) {
   I.compositeQuad = nullptr;
   for (auto& entry : I.surfaces) entry.second->ReleaseGraphicsResources(w);
   I.surfaces.clear();
+  for (auto& entry : I.tauLuts) entry.second->ReleaseGraphicsResources(w);
+  I.tauLuts.clear();
   I.rangeChecked.clear();
   for (auto* fbo : {I.sceneFbo.Get(), I.translucentFbo.Get(), I.lightFbo.Get(), I.atlasFbo.Get(),
                     I.samplesFbo.Get()})

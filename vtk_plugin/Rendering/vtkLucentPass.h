@@ -1,7 +1,8 @@
 /// @file vtkLucentPass.h
-/// @brief Translucent (subsurface-scattering) rendering on the GPU: texture-space importance
-/// sampling (texture-space importance sampling, Chang et al. 2008 Sec. 3) as a
-/// vtkImageProcessingPass.
+/// @brief Translucent (subsurface-scattering) rendering on the GPU as a vtkImageProcessingPass:
+/// the GPU twins of two techniques, texture-space importance sampling (tsis, Chang et al. 2008
+/// Sec. 3; the default, stages below) and the voxel optical-thickness LUT (taulut, Mochida et al.
+/// 2016: vtkLucentTauLut.h).
 ///
 /// Every visible, opaque vtkActor with polygons in the renderer is shaded as one homogeneous
 /// translucent object (light does not cross from one actor to another). Per frame and per actor:
@@ -23,13 +24,21 @@
 #ifndef vtkLucentPass_h
 #define vtkLucentPass_h
 
+#include <map>
 #include <string>
 #include <vector>
 
 #include <vtkImageProcessingPass.h>
 #include "LucentRenderingModule.h"
 
+class vtkActor;
 class vtkLucentSurface;
+#ifndef __VTK_WRAP__
+namespace lucent::technique {
+class KnobValues;
+struct Technique;
+}  // namespace lucent::technique
+#endif
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLState;
 class vtkOpenGLQuadHelper;
@@ -60,15 +69,33 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   ///@}
 
   ///@{
-  /// The knobs this GPU twin shares with the tsis technique (`lucent techniques`: samples,
-  /// atlas-resolution): N of Eq. 9-11, and the atlas's texels per side (rounded up to a power of
-  /// two for the mip pyramid). Their defaults and lower bounds are tsis's own, their upper bounds
-  /// those tsis declares for this twin (lucent/technique/texture_space.hpp); values are clamped to
-  /// that range. The light's depth map resolution is the pass's own.
+  /// The technique whose GPU twin shades the actors: one of the registry's techniques that declare
+  /// vtkLucentPass as their twin (`lucent techniques`: tsis, the default, and taulut). An unknown
+  /// name is reported once and renders nothing translucent.
+  void SetTechnique(const char* name);
+  const char* GetTechnique() const { return this->Technique.c_str(); }
+  static int GetNumberOfTechniques();
+  static std::string GetTechniqueName(int i);
+  ///@}
+
+  ///@{
+  /// A knob the twin shares with its technique, by qualified name ("taulut.voxels"): same name,
+  /// default and lower bound as the technique declares; numbers are clamped to the twin's own
+  /// upper bound (Capabilities::gpuTwinKnobs). A bad choice is reported when the frame is drawn.
+  /// SetSamples and SetAtlasResolution are tsis.samples and tsis.atlas-resolution (the atlas
+  /// rounded up to a power of two for the mip pyramid).
+  void SetKnob(const char* qualifiedName, const char* value);
+  void SetKnobInteger(const char* qualifiedName, int value);
+  void SetKnobReal(const char* qualifiedName, double value);
+  std::string GetKnob(const char* qualifiedName) const;
   void SetSamples(int n);
-  vtkGetMacro(Samples, int);
+  int GetSamples() const { return this->Samples; }
   void SetAtlasResolution(int texels);
-  vtkGetMacro(AtlasResolution, int);
+  int GetAtlasResolution() const { return this->AtlasResolution; }
+  ///@}
+
+  ///@{
+  /// The light's depth map resolution (tsis's shadows): the pass's own.
   vtkSetClampMacro(ShadowMapResolution, int, 16, 8192);
   vtkGetMacro(ShadowMapResolution, int);
   ///@}
@@ -145,14 +172,29 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   bool ShadeSurface(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
                     const FrameSetup& frame, int width, int height);
   void Composite(vtkOpenGLRenderWindow* window);
+#ifndef __VTK_WRAP__
+  /// taulut's twin for one actor: prepare (when its geometry or prepare knobs changed), light
+  /// view, per-pixel sum.
+  bool ShadeTauLut(vtkOpenGLRenderWindow* window, const lucent::technique::Technique& taulut,
+                   const lucent::technique::KnobValues& knobs, vtkLucentSurface* surface,
+                   const FrameSetup& frame, int width, int height);
+  /// The technique's knobs as its twin takes them (the given ones clamped to the twin's range).
+  lucent::technique::KnobValues TwinValues(const lucent::technique::Technique& t) const;
+  void RefreshTsisKnobs();
+#endif
   void ReadBackFrame(int width, int height);
   void ReportError(const std::string& message);
-  void WarnOutsideRange(const vtkLucentSurface& surface);
+#ifndef __VTK_WRAP__
+  void WarnOutsideRange(const vtkLucentSurface& surface, const lucent::technique::Technique& t,
+                        const lucent::technique::KnobValues& knobs);
+#endif
 
   std::string Material = "skin1";
+  std::string Technique = "tsis";
+  std::map<std::string, std::string> Knobs;  ///< qualified name -> value (tsis's: Samples, ...)
   double SizeMm = 0.0;
-  int Samples;          // tsis's default
-  int AtlasResolution;  // tsis's default
+  int Samples = 0;          // tsis.samples (RefreshTsisKnobs)
+  int AtlasResolution = 0;  // tsis.atlas-resolution
   int ShadowMapResolution = 1024;
   double LightDirection[3] = {0.0, 0.0, 0.0};
   double LightIrradiance = 1.0;

@@ -140,7 +140,7 @@ void vtkLucentSurface::Draw(vtkShaderProgram* program, Stage stage) {
 }
 
 void vtkLucentSurface::ReleaseGraphicsResources(vtkWindow*) {
-  for (int s = 0; s < 3; ++s) {
+  for (int s = 0; s < kStages; ++s) {
     if (this->Arrays[s]) this->Arrays[s]->ReleaseGraphicsResources();
     this->BoundProgram[s] = nullptr;
   }

@@ -33,7 +33,8 @@ class vtkLucentSurface : public vtkObject {
   bool Update(vtkActor* actor, double sizeMm, int atlasResolution, std::string& error);
 
   /// Draws the triangles with @p program; @p stage picks the vertex array (one per program).
-  enum Stage { LightDepth = 0, Atlas = 1, Shade = 2 };
+  enum Stage { LightDepth = 0, Atlas = 1, Shade = 2, TauLightView = 3, TauShade = 4 };
+  static constexpr int kStages = 5;
   void Draw(vtkShaderProgram* program, Stage stage);
 
   void ReleaseGraphicsResources(vtkWindow* window);
@@ -61,8 +62,8 @@ class vtkLucentSurface : public vtkObject {
   int BuiltResolution = 0;
 
   vtkSmartPointer<vtkOpenGLBufferObject> Buffer;
-  vtkSmartPointer<vtkOpenGLVertexArrayObject> Arrays[3];
-  vtkShaderProgram* BoundProgram[3] = {nullptr, nullptr, nullptr};
+  vtkSmartPointer<vtkOpenGLVertexArrayObject> Arrays[kStages];
+  vtkShaderProgram* BoundProgram[kStages] = {};
   int CornerCount = 0;
   double MillimetresPerUnit = 1, Centre[3] = {0, 0, 0}, Radius = 1;
   lucent::scene::TriangleMesh MillimetreMesh;

@@ -32,6 +32,34 @@ namespace lucent::atlas {
 inline constexpr double kMaxObliquity =
     20.0;  ///< cap of 1/|n.axis| (faces within 3 degrees of grazing)
 
+/// A light view's frame: orthographic along `axis` (from the light into the object) over the
+/// object's bounding sphere, texel (x, y) centred at centre + (-h + (x + 1/2) 2h / res) t + (...)
+/// b.
+struct LightViewFrame {
+  glm::dvec3 centre{0}, axis{0, 0, -1}, t{1, 0, 0}, b{0, 1, 0};
+  double halfExtent = 0;  ///< h
+};
+
+/// The frame for a point light (the axis from it to the bounds' centre) or a directional light;
+/// throws for an environment light.
+inline LightViewFrame lightViewFrame(const scene::Light& light, const scene::Bounds& bounds) {
+  LightViewFrame f;
+  f.centre = bounds.center();
+  f.halfExtent = 0.5 * bounds.diagonal() * 1.001 + 1e-9;
+  if (const auto* p = std::get_if<scene::PointLight>(&light)) {
+    const glm::dvec3 d = f.centre - p->position;
+    f.axis = glm::length(d) > 0 ? glm::normalize(d) : glm::dvec3(0, 0, -1);
+  } else if (const auto* dl = std::get_if<scene::DirectionalLight>(&light)) {
+    f.axis = -glm::normalize(dl->towardLight);
+  } else {
+    throw std::invalid_argument(
+        "a translucent shadow map needs a point or directional light; "
+        "environment lights have no light view (use --method tsis)");
+  }
+  util::orthonormalBasis(f.axis, f.t, f.b);
+  return f;
+}
+
 class TranslucentShadowMap {
  public:
   /// @param light a point or directional light (throws for an environment light).
@@ -42,20 +70,9 @@ class TranslucentShadowMap {
       : mResolution(resolution) {
     if (resolution < 2)
       throw std::invalid_argument("translucent shadow map resolution must be >= 2");
-    const scene::Bounds bounds = mesh.bounds();
-    mCenter = bounds.center();
-    const double radius = 0.5 * bounds.diagonal() * 1.001 + 1e-9;
-    if (const auto* p = std::get_if<scene::PointLight>(&light)) {
-      const glm::dvec3 d = mCenter - p->position;
-      mAxis = glm::length(d) > 0 ? glm::normalize(d) : glm::dvec3(0, 0, -1);
-    } else if (const auto* dl = std::get_if<scene::DirectionalLight>(&light)) {
-      mAxis = -glm::normalize(dl->towardLight);
-    } else {
-      throw std::invalid_argument(
-          "a translucent shadow map needs a point or directional light; "
-          "environment lights have no light view (use --method tsis)");
-    }
-    util::orthonormalBasis(mAxis, mT, mB);
+    const LightViewFrame frame = lightViewFrame(light, mesh.bounds());
+    mCenter = frame.centre, mAxis = frame.axis, mT = frame.t, mB = frame.b;
+    const double radius = frame.halfExtent;
     mHalfExtent = radius;
     mTexel = 2 * radius / resolution;
     const std::size_t texels = std::size_t(resolution) * resolution;
@@ -103,11 +120,9 @@ class TranslucentShadowMap {
       if (mValid[i]) visit(i, k, share);
     };
     at(pu, pv, 0, 1.0);
-    constexpr double kGolden =
-        2.399963229728653;  // rings turn by the golden angle: no aligned spokes
     for (int k = 1; k <= ring.rings; ++k)
       for (int c = 0; c < ring.perRing; ++c) {
-        const double phi = turn + kGolden * k + 2 * optics::kPi * c / ring.perRing;
+        const double phi = turn + optics::kGoldenAngle * k + 2 * optics::kPi * c / ring.perRing;
         at(pu + ring.radius[std::size_t(k)] * std::cos(phi),
            pv + ring.radius[std::size_t(k)] * std::sin(phi), std::size_t(k), 1.0 / ring.perRing);
       }

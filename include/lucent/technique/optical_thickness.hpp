@@ -74,23 +74,15 @@ class TauLut final : public Prepared {
 
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
-    const std::vector<glm::dvec3> sigmaT = extinctionOf(scene, mMedia.fieldMedia);
-    if (sigmaT.size() != std::size_t(mPaths.media()))
-      throw RequestError("taulut: the scene's media changed since prepare (" +
-                         std::to_string(sigmaT.size()) + " now, " + std::to_string(mPaths.media()) +
-                         " then); prepare again");
+    const std::vector<glm::dvec3> sigmaT = extinction(scene);
     mLookup.resetFarPoints();
     // The irradiance map of Eq. 2 per light, with its first hits (the voxel-number map follows).
-    std::vector<atlas::TranslucentShadowMap> maps = lightViewMaps(
-        scene, irradianceSettings(scene), int(mKnobs.integer("map")), stats, "irradiance_maps");
+    std::vector<atlas::TranslucentShadowMap> maps =
+        lightViewMaps(scene, irradianceSettings(scene), mapResolution(), stats, "irradiance_maps");
     const voxel::TauLutRadiance model = stats.timeFrame("voxel_number_maps", [&] {
-      // Taps placed by the object's densest medium (at density 1): one filter for every point.
-      glm::dvec3 sigmaFilter(0);
-      for (int k = 0; k < mMedia.objectMedia(); ++k)
-        sigmaFilter = glm::max(sigmaFilter, sigmaT[std::size_t(k)]);
-      voxel::TauLutRadiance m(std::move(maps), mPaths, mLookup, sigmaT, sigmaFilter, taps(),
-                              scene.mesh.bounds().diagonal(), scene.parallelFor);
-      m.setRotatedPattern(mKnobs.pick<bool>("pattern", {{"rotated", true}, {"fixed", false}}));
+      voxel::TauLutRadiance m(std::move(maps), mPaths, mLookup, sigmaT, filterExtinction(sigmaT),
+                              taps(), scene.mesh.bounds().diagonal(), scene.parallelFor);
+      m.setRotatedPattern(rotatedPattern());
       return m;
     });
     stats.samples = double(taps());
@@ -107,9 +99,34 @@ class TauLut final : public Prepared {
     return out;
   }
 
- private:
+  ///@{ What a frame reads, for the CPU frame and the GPU twin alike (vtkLucentPass).
+  /// sigma_t of media 1.. under the scene's material now; throws when the media changed.
+  std::vector<glm::dvec3> extinction(const SceneDescription& scene) const {
+    std::vector<glm::dvec3> sigmaT = extinctionOf(scene, mMedia.fieldMedia);
+    if (sigmaT.size() != std::size_t(mPaths.media()))
+      throw RequestError("taulut: the scene's media changed since prepare (" +
+                         std::to_string(sigmaT.size()) + " now, " + std::to_string(mPaths.media()) +
+                         " then); prepare again");
+    return sigmaT;
+  }
+  /// The extinction whose kernel places the taps: the object's densest medium (at density 1), one
+  /// filter for every point.
+  glm::dvec3 filterExtinction(const std::vector<glm::dvec3>& sigmaT) const {
+    glm::dvec3 sigma(0);
+    for (int k = 0; k < mMedia.objectMedia(); ++k) sigma = glm::max(sigma, sigmaT[std::size_t(k)]);
+    return sigma;
+  }
   int taps() const { return 1 + voxel::kTapsPerRing * int(mKnobs.integer("rings")); }
+  bool rotatedPattern() const {
+    return mKnobs.pick<bool>("pattern", {{"rotated", true}, {"fixed", false}});
+  }
+  int mapResolution() const { return int(mKnobs.integer("map")); }
+  const voxel::SurfacePaths& paths() const { return mPaths; }
+  const voxel::SurfaceVoxels& surface() const { return mSurface; }
+  const voxel::SurfaceVoxelLookup& lookup() const { return mLookup; }
+  ///@}
 
+ private:
   /// The paths between surface voxels; the grid moves into them (mMedia.grid is empty afterwards).
   voxel::SurfacePaths buildPaths(const SceneDescription& scene, const KnobValues& knobs,
                                  Statistics& stats) {
@@ -179,6 +196,11 @@ inline Technique taulutTechnique() {
   t.capabilities.inclusions = true;
   t.capabilities.singleScattering = true;
   t.capabilities.multipleScattering = false;
+  t.capabilities.gpuTwin = "vtkLucentPass";
+  // The pass prepares on the CPU and uploads the grid and table as textures; its per-pixel loop
+  // holds at most 16 rings (shaders/taulut_shade.frag) and its maps are RGBA32F (4096^2: 256 MiB).
+  t.capabilities.gpuTwinKnobs = {{"voxels", 1024}, {"storage"},   {"precision"}, {"cluster", 64},
+                                 {"max-table-mb"}, {"rings", 16}, {"pattern"},   {"map", 4096}};
   t.capabilities.precomputeScaling =
       "lut: N_s^2 / 2 walks of O(voxels) (N_s surface voxels); hierarchical: about "
       "(N_s / cluster^2)^2 / 2; march: none";

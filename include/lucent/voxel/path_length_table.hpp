@@ -88,6 +88,14 @@ class PathLengthTable {
   int media() const { return mMedia; }
   std::size_t bytes() const { return mHalf.size() * 2 + mSingle.size() * 4; }
 
+  ///@{ The stored values, packed by pairIndex then medium, for an upload (the GPU twin): fp16 in
+  /// units of halfUnit() mm, or fp32 mm; the other vector is empty.
+  Precision precision() const { return mPrecision; }
+  const std::vector<std::uint16_t>& halfValues() const { return mHalf; }
+  const std::vector<float>& singleValues() const { return mSingle; }
+  double halfUnit() const { return mUnit; }
+  ///@}
+
  private:
   void store(std::size_t pair, const MediaGrid& grid, const glm::dvec3& a, const glm::dvec3& b) {
     double length[256] = {};

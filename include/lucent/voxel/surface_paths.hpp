@@ -99,6 +99,15 @@ class SurfacePaths {
   const MediaGrid& grid() const { return mGrid; }
   const glm::dvec3& centre(std::int32_t i) const { return mCentres[std::size_t(i)]; }
 
+  ///@{ What lengths() reads, for an upload (the GPU twin): the storage, the table (lut: between
+  /// surface voxels; hierarchical: between cluster representatives; march: none), and for
+  /// hierarchical each surface voxel's cluster and each cluster's cell.
+  Storage storage() const { return mOptions.storage; }
+  const PathLengthTable* table() const { return mTable ? &*mTable : nullptr; }
+  const std::vector<std::int32_t>& clusterOf() const { return mClusterOf; }
+  const std::vector<glm::ivec3>& clusterCells() const { return mClusterCell; }
+  ///@}
+
  private:
   /// Groups the surface voxels by cluster cell; returns each cluster's representative centre (the
   /// member nearest the members' mean).

@@ -52,6 +52,9 @@ class SurfaceVoxelLookup {
   std::size_t farPoints() const { return mFarPoints; }
   void resetFarPoints() { mFarPoints = 0; }
 
+  /// Per grid voxel, the surface voxel its flood fill reached (for an upload: the GPU twin).
+  const std::vector<std::int32_t>& nearestMap() const { return mNearest; }
+
  private:
   double distance2(const glm::dvec3& p, std::int32_t n) const {
     const glm::dvec3 d = mGrid.centre(mSurface.voxels[std::size_t(n)]) - p;

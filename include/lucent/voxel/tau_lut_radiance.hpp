@@ -115,9 +115,10 @@ class TauLutRadiance {
   /// uncorrelated between neighbouring pixels.
   static double turnOf(const glm::dvec3& xo, double texel) {
     const glm::ivec3 q(glm::floor(xo / (0.25 * texel)));
-    std::uint32_t h = std::uint32_t(q.x) * 73856093u ^ std::uint32_t(q.y) * 19349663u ^
-                      std::uint32_t(q.z) * 83492791u;
-    h ^= h >> 16, h *= 0x45d9f3bu, h ^= h >> 16;
+    std::uint32_t h = std::uint32_t(q.x) * optics::kTurnHashX ^
+                      std::uint32_t(q.y) * optics::kTurnHashY ^
+                      std::uint32_t(q.z) * optics::kTurnHashZ;
+    h ^= h >> 16, h *= optics::kTurnHashMix, h ^= h >> 16;
     return 2 * optics::kPi / kTapsPerRing * double(h) / 4294967296.0;
   }
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -19,6 +20,9 @@ namespace {
 namespace lt = lucent::technique;
 constexpr const char* kFilterMarker = "<!-- @LUCENT_FILTER_TECHNIQUE_PROPERTIES@ -->";
 constexpr const char* kViewMarker = "<!-- @LUCENT_VIEW_TECHNIQUE_PROPERTIES@ -->";
+constexpr const char* kSharedBegin = "<!-- @LUCENT_SHARED_FILTER_PROPERTIES_BEGIN@ -->\n";
+constexpr const char* kSharedEnd = "<!-- @LUCENT_SHARED_FILTER_PROPERTIES_END@ -->\n";
+constexpr const char* kSharedAt = "<!-- @LUCENT_SHARED_FILTER_PROPERTIES@ -->\n";
 
 std::string escape(const std::string& s) {
   std::string out;
@@ -61,25 +65,27 @@ double minimum(const lt::KnobSpec& k, bool integer) {
   return integer ? k.min + 1 : std::nextafter(k.min, std::numeric_limits<double>::infinity());
 }
 
-/// The element, command and domain of one knob's property. A filter property passes the qualified
-/// knob name first (initial_string) and shows only for its technique; a view property has a setter
-/// of its own.
+/// The element, command and domain of one knob's property. It passes the qualified knob name
+/// first (initial_string) and shows only for its technique: the filter's properties are named
+/// after the knob ("TsisSamples"), the view's "Lucent" + that ("LucentTsisSamples").
 std::string property(const lt::Technique& t, lt::KnobSpec k, bool forFilter) {
-  const std::string name = forFilter ? lt::propertyName(t, k) : "Lucent" + lt::camelCase(k.name);
+  const std::string name = (forFilter ? "" : "Lucent") + lt::propertyName(t, k);
   const bool integer = k.kind == lt::KnobKind::Integer && fitsInt(k.min) && fitsInt(k.max);
   const bool real = k.kind == lt::KnobKind::Real || (k.kind == lt::KnobKind::Integer && !integer);
   const char* element = integer ? "IntVectorProperty"
                         : real  ? "DoubleVectorProperty"
                                 : "StringVectorProperty";
-  const std::string command = forFilter ? (integer ? "SetKnobInteger"
-                                           : real  ? "SetKnobReal"
-                                                   : "SetKnob")
-                                        : "Set" + name;
+  const std::string command = std::string(forFilter ? "" : "SetLucent") +
+                              (forFilter ? "SetKnob" : "Knob") +
+                              (integer ? "Integer"
+                               : real  ? "Real"
+                                       : "");
+  const std::string technique = forFilter ? "Technique" : "LucentTechnique";
   std::ostringstream o;
   // No label: ParaView's Python names follow the label, and must be the property names front ends
   // use.
   o << "      <" << element << " name=\"" << name << "\" command=\"" << command << "\" ";
-  if (forFilter) o << "initial_string=\"" << escape(lt::qualifiedName(t, k)) << "\" ";
+  o << "initial_string=\"" << escape(lt::qualifiedName(t, k)) << "\" ";
   o << "number_of_elements=\"1\" default_values=\"" << escape(k.defaultValue) << "\">\n";
   if (integer || real) {
     o << "        <" << (integer ? "IntRangeDomain" : "DoubleRangeDomain")
@@ -96,10 +102,9 @@ std::string property(const lt::Technique& t, lt::KnobSpec k, bool forFilter) {
   if (k.kind != lt::KnobKind::Text)
     doc += " (" + k.rangeText() + (k.unit.empty() ? "" : " " + k.unit) + ")";
   o << "        <Documentation>" << escape(doc) << "</Documentation>\n";
-  if (forFilter)
-    o << "        <Hints>\n          <PropertyWidgetDecorator type=\"GenericDecorator\" "
-         "mode=\"visibility\" "
-      << "property=\"Technique\" value=\"" << escape(t.name) << "\" />\n        </Hints>\n";
+  o << "        <Hints>\n          <PropertyWidgetDecorator type=\"GenericDecorator\" "
+       "mode=\"visibility\" "
+    << "property=\"" << technique << "\" value=\"" << escape(t.name) << "\" />\n        </Hints>\n";
   o << "      </" << element << ">\n";
   return o.str();
 }
@@ -120,17 +125,28 @@ std::string filterProperties(const lt::Registry& registry) {
   return o.str();
 }
 
-/// The view's properties for the knobs its GPU pass shares with the technique it is the twin of.
+/// The view's technique choice (the techniques whose GPU twin is the pass) and a property for each
+/// knob a twin shares with its technique, with the twin's own bound.
 std::string viewProperties(const lt::Registry& registry) {
-  std::ostringstream o;
+  std::ostringstream o, knobs;
+  std::vector<std::string> twins;
   for (const auto& t : registry.all())
-    if (t.capabilities.gpuTwin == "vtkLucentPass")
+    if (t.capabilities.gpuTwin == "vtkLucentPass") {
+      twins.push_back(t.name);
       for (const auto& twin : t.capabilities.gpuTwinKnobs) {
         lt::KnobSpec k = *t.knob(twin.knob);
         k.max = std::min(k.max, twin.max);  // the twin's own bound
-        o << property(t, k, false);
+        knobs << property(t, k, false);
       }
-  return o.str();
+    }
+  o << "      <StringVectorProperty name=\"LucentTechnique\" command=\"SetLucentTechnique\" "
+       "number_of_elements=\"1\" default_values=\""
+    << escape(twins.empty() ? "" : twins.front())
+    << "\">\n        <StringListDomain name=\"list\">\n";
+  for (const auto& name : twins) o << "          <String value=\"" << escape(name) << "\" />\n";
+  o << "        </StringListDomain>\n        <Documentation>The technique whose GPU twin shades "
+       "the view (lucent techniques lists them).</Documentation>\n      </StringVectorProperty>\n";
+  return o.str() + knobs.str();
 }
 
 bool replaceMarker(std::string& xml, const std::string& marker, const std::string& with) {
@@ -138,6 +154,19 @@ bool replaceMarker(std::string& xml, const std::string& marker, const std::strin
   if (at == std::string::npos) return false;
   xml.replace(at, marker.size(), with);
   return true;
+}
+
+/// Copies the filter's properties between the BEGIN and END markers (scene and technique) to the
+/// volume filter's marker: one definition for both proxies (ParaView's proxy inheritance crashes
+/// ParaView 5.11 on a SourceProxy that redefines Input).
+bool copySharedProperties(std::string& xml) {
+  const auto begin = xml.find(kSharedBegin), end = xml.find(kSharedEnd);
+  if (begin == std::string::npos || end == std::string::npos || end < begin) return false;
+  const std::string shared =
+      xml.substr(begin + std::strlen(kSharedBegin), end - begin - std::strlen(kSharedBegin));
+  xml.erase(end, std::strlen(kSharedEnd));
+  xml.erase(begin, std::strlen(kSharedBegin));
+  return replaceMarker(xml, kSharedAt, shared);
 }
 }  // namespace
 
@@ -152,9 +181,9 @@ int main(int argc, char** argv) {
   std::string xml = text.str();
   const lt::Registry registry = lt::coreRegistry();  // what vtkLucentFilter::Techniques() holds
   if (!in || !replaceMarker(xml, kFilterMarker, filterProperties(registry)) ||
-      !replaceMarker(xml, kViewMarker, viewProperties(registry))) {
-    std::cerr << "generate_plugin_xml: " << argv[1] << " lacks " << kFilterMarker << " or "
-              << kViewMarker << "\n";
+      !replaceMarker(xml, kViewMarker, viewProperties(registry)) || !copySharedProperties(xml)) {
+    std::cerr << "generate_plugin_xml: " << argv[1] << " lacks " << kFilterMarker << ", "
+              << kViewMarker << " or the shared-properties markers\n";
     return 2;
   }
   std::ofstream out(argv[2]);

@@ -39,12 +39,20 @@ void vtkLucentRenderView::SetLucentSizeMm(double mm) {
   this->Pass->SetSizeMm(mm);
   this->Modified();
 }
-void vtkLucentRenderView::SetLucentSamples(int n) {
-  this->Pass->SetSamples(n);
+void vtkLucentRenderView::SetLucentTechnique(const char* name) {
+  this->Pass->SetTechnique(name);
   this->Modified();
 }
-void vtkLucentRenderView::SetLucentAtlasResolution(int texels) {
-  this->Pass->SetAtlasResolution(texels);
+void vtkLucentRenderView::SetLucentKnob(const char* qualifiedName, const char* value) {
+  this->Pass->SetKnob(qualifiedName, value);
+  this->Modified();
+}
+void vtkLucentRenderView::SetLucentKnobInteger(const char* qualifiedName, int value) {
+  this->Pass->SetKnobInteger(qualifiedName, value);
+  this->Modified();
+}
+void vtkLucentRenderView::SetLucentKnobReal(const char* qualifiedName, double value) {
+  this->Pass->SetKnobReal(qualifiedName, value);
   this->Modified();
 }
 void vtkLucentRenderView::SetLucentLightDirection(double x, double y, double z) {

@@ -21,8 +21,12 @@ class LUCENTPARAVIEWVIEW_EXPORT vtkLucentRenderView : public vtkPVRenderView {
   void SetLucentEnabled(bool enabled);
   void SetLucentMaterial(const char* name);
   void SetLucentSizeMm(double mm);
-  void SetLucentSamples(int n);
-  void SetLucentAtlasResolution(int texels);
+  /// The technique whose GPU twin shades the view, and its knobs by qualified name (the generated
+  /// properties pass it: "tsis.samples").
+  void SetLucentTechnique(const char* name);
+  void SetLucentKnob(const char* qualifiedName, const char* value);
+  void SetLucentKnobInteger(const char* qualifiedName, int value);
+  void SetLucentKnobReal(const char* qualifiedName, double value);
   void SetLucentLightDirection(double x, double y, double z);
   void SetLucentLightIrradiance(double e);
   void SetLucentExposure(double exposure);

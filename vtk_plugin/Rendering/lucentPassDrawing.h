@@ -1,0 +1,89 @@
+/// @file lucentPassDrawing.h
+/// @brief What every stage of vtkLucentPass draws with (private to Lucent::Rendering): the shared
+/// GLSL pasted into a stage, texel-exact textures, and drawing into one of the pass's framebuffers.
+#ifndef lucentPassDrawing_h
+#define lucentPassDrawing_h
+
+#include <initializer_list>
+#include <string>
+
+#include <vtkOpenGLFramebufferObject.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkOpenGLState.h>
+#include <vtkShaderProgram.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextureObject.h>
+
+#include "lucent_glsl.h"
+
+namespace lucent::vtkpass {
+
+/// The shared GLSL pasted where a stage asks for it (shaders/README.md).
+inline std::string withSharedGlsl(const char* stage) {
+  std::string source = stage;
+  vtkShaderProgram::Substitute(source, "//LUCENT::Optics",
+                               std::string(lucent::glsl::kConstants) + lucent::glsl::kOpticsGlsl);
+  vtkShaderProgram::Substitute(source, "//LUCENT::Voxel", lucent::glsl::kVoxelGlsl);
+  vtkShaderProgram::Substitute(source, "//LUCENT::Display", lucent::glsl::kDisplayGlsl);
+  return source;
+}
+
+/// Every texture of the pass is read texel for texel: nearest filtering, clamped at the edges.
+inline vtkSmartPointer<vtkTextureObject> newNearestTexture(vtkOpenGLRenderWindow* window) {
+  auto t = vtkSmartPointer<vtkTextureObject>::New();
+  t->SetContext(window);
+  t->SetMinificationFilter(vtkTextureObject::Nearest);
+  t->SetMagnificationFilter(vtkTextureObject::Nearest);
+  t->SetWrapS(vtkTextureObject::ClampToEdge);
+  t->SetWrapT(vtkTextureObject::ClampToEdge);
+  t->SetWrapR(vtkTextureObject::ClampToEdge);
+  return t;
+}
+
+inline vtkSmartPointer<vtkTextureObject> newColorTexture(vtkOpenGLRenderWindow* window, int width,
+                                                         int height) {
+  auto t = newNearestTexture(window);
+  t->Allocate2D(unsigned(width), unsigned(height), 4, VTK_FLOAT);
+  return t;
+}
+
+inline vtkSmartPointer<vtkTextureObject> newDepthTexture(vtkOpenGLRenderWindow* window, int width,
+                                                         int height) {
+  auto t = newNearestTexture(window);
+  t->AllocateDepth(unsigned(width), unsigned(height), vtkTextureObject::Float32);
+  return t;
+}
+
+inline vtkSmartPointer<vtkOpenGLFramebufferObject> newFramebuffer(vtkOpenGLRenderWindow* window) {
+  auto f = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+  f->SetContext(window);
+  return f;
+}
+
+/// Saves the caller's bindings, binds @p fbo with these attachments for drawing, viewport and
+/// scissor 0,0,w,h (not the renderer's tile origin: inside our own framebuffers the origin is
+/// always 0).
+inline void beginDrawing(vtkOpenGLState* state, vtkOpenGLFramebufferObject* fbo,
+                         std::initializer_list<vtkTextureObject*> colors, vtkTextureObject* depth,
+                         int width, int height) {
+  fbo->SaveCurrentBindingsAndBuffers();
+  fbo->Bind();
+  unsigned count = 0;
+  for (vtkTextureObject* c : colors) fbo->AddColorAttachment(count++, c);
+  if (depth) fbo->AddDepthAttachment(depth);
+  if (count > 0)
+    fbo->ActivateDrawBuffers(count);
+  else
+    fbo->DeactivateDrawBuffers();
+  state->vtkglViewport(0, 0, width, height);
+  state->vtkglScissor(0, 0, width, height);
+}
+
+inline void endDrawing(vtkOpenGLFramebufferObject* fbo) {
+  fbo->UnBind();
+  fbo->RestorePreviousBindingsAndBuffers();
+}
+
+}  // namespace lucent::vtkpass
+
+#endif
