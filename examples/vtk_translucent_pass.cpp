@@ -29,15 +29,16 @@
 #include <vtkSuperquadricSource.h>
 #include <vtkWindowToImageFilter.h>
 
-#include <lucent/scene/shapes.hpp>
 #include <lucent/technique/core_techniques.hpp>
+#include "scene/builtin_shapes.hpp"
 
 #include "lucentPolyDataMesh.h"
 #include "vtkLucentPass.h"
 
 namespace {
 struct Options {
-  std::string out = "translucent-pass.png", technique = "tsis", material = "skin1", shape = "torus";
+  std::string out = "translucent-pass.png", technique = "tsis", material = "skin1",
+              shape = "superquadric", fill;
   int size = 512, frames = 5;
   double sizeMm = 30;
   bool sweep = false;
@@ -77,10 +78,10 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
-/// The torus-like superquadric (thin and thick parts), or the paper's cube with a cavity.
+/// The torus-like superquadric (thin and thick parts), or one of lucent's built-in shapes.
 vtkSmartPointer<vtkPolyData> shapeOf(const std::string& name) {
-  if (name == "cube-cavity")
-    return lucent::vtkadapter::polyDataOf(lucent::scene::shapes::cubeWithCavity(0.6));
+  if (name != "superquadric")
+    return lucent::vtkadapter::polyDataOf(lucent::scene::makeBuiltinShape(name));
   vtkNew<vtkSuperquadricSource> shape;
   shape->ToroidalOn();
   shape->SetThickness(0.35);
@@ -88,6 +89,20 @@ vtkSmartPointer<vtkPolyData> shapeOf(const std::string& name) {
   shape->SetPhiResolution(48);
   shape->Update();
   return shape->GetOutput();
+}
+
+/// The shape's inner bodies (the bottle's liquid) as actors whose data is marked as such.
+void addInnerBodies(const Options& o, vtkRenderer* renderer) {
+  if (o.shape == "superquadric") return;
+  for (const auto& body : lucent::scene::builtinInnerBodies(o.shape)) {
+    auto data = lucent::vtkadapter::polyDataOf(body.surface);
+    lucent::vtkadapter::markInnerBody(data, o.fill.empty() ? body.defaultMaterial : o.fill);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(data);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    renderer->AddActor(actor);
+  }
 }
 
 /// Milliseconds per frame: each frame redoes every per-frame stage (the light or the object may
@@ -118,6 +133,7 @@ int main(int argc, char** argv) {
 
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
+  addInnerBodies(o, renderer);
   renderer->SetBackground(0.05, 0.05, 0.07);
   renderer->GetActiveCamera()->SetPosition(0, 0.6, 1);
   renderer->GetActiveCamera()->SetViewUp(0, 1, 0);

@@ -126,17 +126,8 @@ scene::Light parseLight(const Args& args, const std::string& text, double diag,
   args.fail("--light '" + text + "': unknown kind '" + kind +
             "'; use point:X,Y,Z[:R,G,B], dir:X,Y,Z[:R,G,B] or env:FILE.exr[:SCALE]");
 }
-/// Whether a point lies inside the closed mesh (odd crossings along a fixed direction).
-bool inside(const scene::RayCaster& caster, glm::dvec3 p, double epsilon) {
-  int crossings = 0;
-  const glm::dvec3 dir = glm::normalize(glm::dvec3(1, 0.0123, 0.0321));
-  for (int i = 0; i < 10000; ++i) {
-    const auto hit = caster.intersect(p, dir, epsilon, std::numeric_limits<double>::infinity());
-    if (!hit) break;
-    ++crossings;
-    p += hit->t * dir;
-  }
-  return crossings % 2 == 1;
+bool inside(const scene::RayCaster& caster, const glm::dvec3& p, double epsilon) {
+  return scene::insideByParity(caster, p, epsilon);
 }
 
 /// "--inclusion MATERIAL[:FRACTION]": a sphere of another material at the bounding-box centre, its

@@ -8,6 +8,7 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
+#include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -17,6 +18,7 @@
 
 #include <lucent/technique/registry.hpp>
 
+#include "lucentPolyDataMesh.h"
 #include "vtkLucentFilter.h"
 
 namespace {
@@ -302,4 +304,62 @@ TEST_CASE(
   }
   CHECK(top > 20);
   CHECK(bottom > 20);
+}
+
+TEST_CASE(
+    "vtkLucentFilter: a block marked as an inner body fills the surface around it (taulut), bad "
+    "bodies are errors") {
+  // A marble sphere 2.3 mm across (SizeMm 4: the box diagonal) holding a sphere of 3/4 its radius,
+  // lit from the side: the shell is under a mean free path thick, so paths cross the inner body.
+  auto sphereOf = [](double radius) {
+    vtkNew<vtkSphereSource> s;
+    s->SetRadius(radius);
+    s->SetThetaResolution(32);
+    s->SetPhiResolution(16);
+    s->Update();
+    auto out = vtkSmartPointer<vtkPolyData>::New();
+    out->DeepCopy(s->GetOutput());
+    return out;
+  };
+  auto run = [&](const char* innerMaterial, double innerRadius) {
+    vtkNew<vtkMultiBlockDataSet> blocks;
+    blocks->SetBlock(0, sphereOf(4.0));
+    if (innerMaterial) {
+      auto inner = sphereOf(innerRadius);
+      lucent::vtkadapter::markInnerBody(inner, innerMaterial);
+      blocks->SetBlock(1, inner);
+    }
+    vtkNew<vtkLucentFilter> filter;
+    filter->SetInputData(blocks);
+    filter->SetMaterial("marble");
+    filter->SetSizeMm(4);
+    filter->SetTechnique("taulut");
+    filter->SetKnob("taulut.voxels", "24");
+    filter->SetKnob("taulut.precision", "fp32");  // fp16 would round each medium's length apart
+    filter->SetLightDirection(1, 0.2, 0.1);
+    filter->GlobalWarningDisplayOff();
+    filter->Update();
+    std::vector<double> b;
+    if (vtkDataArray* a = filter->GetOutput()->GetPointData()->GetArray("Radiosity"))
+      for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+        for (int c = 0; c < 3; ++c) b.push_back(a->GetComponent(i, c));
+    return b;
+  };
+  const auto plain = run(nullptr, 0), sameMaterial = run("marble", 3.0),
+             ketchup = run("ketchup", 3.0);
+  REQUIRE(!plain.empty());
+  REQUIRE(sameMaterial.size() == plain.size());
+  REQUIRE(ketchup.size() == plain.size());  // the inner body is not part of the output surface
+  double d2 = 0, r2 = 0, sumKetchup = 0, sumPlain = 0;
+  for (std::size_t i = 0; i < plain.size(); ++i) {
+    d2 += (sameMaterial[i] - plain[i]) * (sameMaterial[i] - plain[i]), r2 += plain[i] * plain[i];
+    sumKetchup += ketchup[i], sumPlain += plain[i];
+  }
+  // Marble inside marble is marble (tau summed over two media of one sigma_t).
+  CHECK(std::sqrt(d2 / r2) < 1e-5);
+  // taulut sees extinction only, and ketchup's is below marble's in every channel.
+  MESSAGE("summed radiosity: ketchup inside " << sumKetchup << ", all marble " << sumPlain);
+  CHECK(sumKetchup > 1.01 * sumPlain);
+  CHECK(run("unobtainium", 3.0).empty());  // not a material: refused
+  CHECK(run("ketchup", 6.0).empty());      // not inside the object: refused
 }

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -19,11 +20,13 @@
 #include <vtkCleanPolyData.h>
 #include <vtkCompositeDataIterator.h>
 #include <vtkCompositeDataSet.h>
+#include <vtkFieldData.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
 #include <vtkTriangleFilter.h>
 
 #include <lucent/scene/mesh.hpp>
@@ -149,18 +152,46 @@ inline vtkSmartPointer<vtkCellArray> polysOf(const scene::TriangleMesh& mesh) {
   return polys;
 }
 
-inline void collectLeaves(vtkDataObject* data, std::vector<vtkPolyData*>& leaves) {
+/// The surface leaves of `data`: the object's (inner = false) or the inner bodies' (true).
+inline void collectLeaves(vtkDataObject* data, std::vector<vtkPolyData*>& leaves,
+                          bool inner = false);
+}  // namespace detail
+
+/// The field-data string array that makes a data set an inner body of the object around it, filled
+/// with the measured material it names (the wine in a bottle): vtkLucentFilter takes such blocks of
+/// a composite input, vtkLucentPass such actors, as inclusions of the surrounding surface.
+inline constexpr const char* kInnerMaterialArray = "LucentInnerMaterial";
+
+/// The material `data` is an inner body of, or "" when it is none.
+inline std::string innerMaterialOf(vtkDataObject* data) {
+  vtkFieldData* field = data ? data->GetFieldData() : nullptr;
+  auto* names =
+      field ? vtkStringArray::SafeDownCast(field->GetAbstractArray(kInnerMaterialArray)) : nullptr;
+  return names && names->GetNumberOfValues() > 0 ? names->GetValue(0) : std::string();
+}
+
+/// Marks `data` as an inner body filled with `material`.
+inline void markInnerBody(vtkDataObject* data, const std::string& material) {
+  vtkNew<vtkStringArray> names;
+  names->SetName(kInnerMaterialArray);
+  names->InsertNextValue(material);
+  data->GetFieldData()->AddArray(names);
+}
+
+inline void detail::collectLeaves(vtkDataObject* data, std::vector<vtkPolyData*>& leaves,
+                                  bool inner) {
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(data)) {
     vtkSmartPointer<vtkCompositeDataIterator> it;
     it.TakeReference(composite->NewIterator());
     for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-      collectLeaves(it->GetCurrentDataObject(), leaves);
+      collectLeaves(it->GetCurrentDataObject(), leaves, inner);
     return;
   }
   auto* poly = vtkPolyData::SafeDownCast(data);
-  if (poly && poly->GetNumberOfPolys() + poly->GetNumberOfStrips() > 0) leaves.push_back(poly);
+  if (poly && poly->GetNumberOfPolys() + poly->GetNumberOfStrips() > 0 &&
+      innerMaterialOf(poly).empty() != inner)
+    leaves.push_back(poly);
 }
-}  // namespace detail
 
 /// @param matrix moves the points (an actor's matrix); null keeps them.
 /// @param orient turn an inside-out surface outward (not for one piece of a distributed surface,
@@ -212,6 +243,28 @@ inline PolyDataMesh meshFromData(vtkDataObject* data, vtkMatrix4x4* matrix = nul
   }
   out.triangles->SetPolys(detail::polysOf(out.mesh));
   return out;
+}
+
+/// An inner body of the data: its material and its surface (welded, outward, moved by `matrix`).
+struct InnerBodyData {
+  std::string material;
+  PolyDataMesh surface;
+};
+
+/// The leaves of `data` marked as inner bodies (kInnerMaterialArray), in traversal order.
+inline std::vector<InnerBodyData> innerBodiesOf(vtkDataObject* data,
+                                                vtkMatrix4x4* matrix = nullptr) {
+  std::vector<vtkPolyData*> leaves;
+  detail::collectLeaves(data, leaves, /*inner=*/true);
+  std::vector<InnerBodyData> bodies;
+  for (vtkPolyData* leaf : leaves) {
+    vtkNew<vtkPolyData> unmarked;  // meshFromData takes the object's (unmarked) leaves
+    unmarked->ShallowCopy(leaf);
+    vtkNew<vtkFieldData> none;
+    unmarked->SetFieldData(none);
+    bodies.push_back({innerMaterialOf(leaf), meshFromData(unmarked, matrix)});
+  }
+  return bodies;
 }
 
 /// Reverses the winding of every triangle, in the mesh and in its VTK data.

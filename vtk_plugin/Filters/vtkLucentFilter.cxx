@@ -188,12 +188,18 @@ Surfaces surfacesOf(vtkDataObject* input, vtkMultiProcessController* controller)
 
 /// The whole surface in millimetres (scaled about the origin to SizeMm, or as given) and its ray
 /// caster.
-vtkSmartPointer<vtkPolyData> scaleToMillimetres(lucent::scene::TriangleMesh& mesh,
-                                                vtkCellArray* polys, double sizeMm, double& scale) {
+/// Millimetres per data unit: as given (0: the data's units are mm), or the diagonal made SizeMm.
+double millimetresPerUnit(const lucent::scene::TriangleMesh& mesh, double sizeMm) {
   const double diagonal = mesh.bounds().diagonal();
   if (!(diagonal > 0) || !std::isfinite(diagonal))
     throw lt::RequestError("The input has zero or non-finite extent");
-  scale = sizeMm > 0 ? sizeMm / diagonal : 1.0;
+  return sizeMm > 0 ? sizeMm / diagonal : 1.0;
+}
+
+/// The surface scaled about the origin to millimetres, in the mesh and as VTK data (for its ray
+/// caster).
+vtkSmartPointer<vtkPolyData> scaleToMillimetres(lucent::scene::TriangleMesh& mesh,
+                                                vtkCellArray* polys, double scale) {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(vtkIdType(mesh.positions.size()));
@@ -204,6 +210,36 @@ vtkSmartPointer<vtkPolyData> scaleToMillimetres(lucent::scene::TriangleMesh& mes
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->SetPoints(points);
   out->SetPolys(polys);
+  return out;
+}
+
+/// The input's inner bodies (kInnerMaterialArray) as inclusions in millimetres, each with its own
+/// inside test; every vertex must lie inside the object.
+std::vector<lt::Inclusion> inclusionsOf(vtkDataObject* input, double scale,
+                                        const lucent::scene::RayCaster& object, double epsilon) {
+  std::vector<lt::Inclusion> out;
+  for (auto& body : lucent::vtkadapter::innerBodiesOf(input)) {
+    const auto material = lucent::optics::findMaterial(body.material);
+    if (!material)
+      throw lt::RequestError(
+          "an inner body's " + std::string(lucent::vtkadapter::kInnerMaterialArray) + " '" +
+          body.material +
+          "' is not a measured material; use one of: " + lucent::optics::measuredMaterialNames());
+    lt::Inclusion inc;
+    inc.surface = body.surface.mesh;
+    const auto mm = scaleToMillimetres(inc.surface, body.surface.triangles->GetPolys(), scale);
+    for (const auto& p : inc.surface.positions)
+      if (!lucent::scene::insideByParity(object, glm::dvec3(p), epsilon))
+        throw lt::RequestError("the inner body of " + material->name +
+                               " is not inside the surface; an inner body must lie within it");
+    const auto caster = std::make_shared<vtkLucentRayCaster>(mm);
+    inc.contains = [caster, epsilon](const glm::dvec3& p) {
+      return lucent::scene::insideByParity(*caster, p, epsilon);
+    };
+    inc.medium.material = *material;
+    inc.description = material->name + " inner body";
+    out.push_back(std::move(inc));
+  }
   return out;
 }
 
@@ -263,12 +299,17 @@ int vtkLucentFilter::ShadeSurface(vtkDataObject* input, vtkPolyData* output,
   // Checked before any work; across processes every rank must agree before the collective gather.
   Request request;
   std::string problem;
+  const bool distributed = this->Controller && this->Controller->GetNumberOfProcesses() > 1;
   try {
     request = this->CheckRequest();
+    if (distributed && !lucent::vtkadapter::innerBodiesOf(input).empty())
+      throw lt::RequestError("inner bodies (" +
+                             std::string(lucent::vtkadapter::kInnerMaterialArray) +
+                             ") need the whole object on one process; run the filter without MPI");
   } catch (const std::exception& e) {
     problem = e.what();
   }
-  if (this->Controller && this->Controller->GetNumberOfProcesses() > 1) {
+  if (distributed) {
     int ok = problem.empty() ? 1 : 0, allOk = 0;
     this->Controller->AllReduce(&ok, &allOk, 1, vtkCommunicator::MIN_OP);
     if (!allOk && problem.empty())
@@ -291,12 +332,13 @@ int vtkLucentFilter::ShadeSurface(vtkDataObject* input, vtkPolyData* output,
     lt::SceneDescription scene;
     scene.meshName = "the filter's input";
     scene.mesh = std::move(surfaces.whole.mesh);
-    double mmPerUnit = 1;
-    const auto millimetres = scaleToMillimetres(scene.mesh, surfaces.whole.triangles->GetPolys(),
-                                                this->SizeMm, mmPerUnit);
+    const double mmPerUnit = millimetresPerUnit(scene.mesh, this->SizeMm);
+    const auto millimetres =
+        scaleToMillimetres(scene.mesh, surfaces.whole.triangles->GetPolys(), mmPerUnit);
     const vtkLucentRayCaster caster(millimetres);
     scene.vertexNormals = scene.mesh.vertexNormals();
     scene.medium.material = request.material;
+    scene.inclusions = inclusionsOf(input, mmPerUnit, caster, scene.rayEpsilon());
     if (medium) medium(scene.medium, mmPerUnit);
     scene.lights = {
         lucent::scene::DirectionalLight{request.towardLight, glm::dvec3(this->LightIrradiance)}};

@@ -9,13 +9,16 @@
 /// ("TsisSamples", the mechanical CamelCase) are generated from it. Values are checked when the
 /// filter runs.
 ///
-/// Input: a surface (vtkPolyData) or a composite of surfaces, shaded as one.
-/// Output: the input triangulated and welded (lucentPolyDataMesh.h), with point arrays "Radiosity"
-/// (3 floats, irradiance units; techniques that compute B), "Radiance" (3 floats, seen head-on) and
-/// "TranslucentColor" (3 unsigned chars, Exposure * B (else the radiance) tone-mapped x / (1 + x),
-/// sRGB-encoded, the active scalars). Lengths: the data's units are millimetres, or the data is
-/// scaled so its bounding-box diagonal is SizeMm. Reports progress (ProgressEvent) through every
-/// stage.
+/// Input: a surface (vtkPolyData) or a composite of surfaces, shaded as one. A block whose field
+/// data holds the string array LucentInnerMaterial (lucent::vtkadapter::markInnerBody) is an inner
+/// body of that material inside the surface (the wine in a bottle; techniques that take inclusions:
+/// taulut, voxel-single, pathtrace) and is not part of the output; a cavity is an inner shell of
+/// the surface itself, wound inward. Inner bodies need one process. Output: the input triangulated
+/// and welded (lucentPolyDataMesh.h), with point arrays "Radiosity" (3 floats, irradiance units;
+/// techniques that compute B), "Radiance" (3 floats, seen head-on) and "TranslucentColor" (3
+/// unsigned chars, Exposure * B (else the radiance) tone-mapped x / (1 + x), sRGB-encoded, the
+/// active scalars). Lengths: the data's units are millimetres, or the data is scaled so its
+/// bounding-box diagonal is SizeMm. Reports progress (ProgressEvent) through every stage.
 #ifndef vtkLucentFilter_h
 #define vtkLucentFilter_h
 

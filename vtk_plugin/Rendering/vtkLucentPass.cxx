@@ -7,6 +7,7 @@
 #include <vtkActor.h>
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
+#include <vtkMapper.h>
 #include <vtkMatrix3x3.h>
 #include <vtkMatrix4x4.h>
 #include <vtkObjectFactory.h>
@@ -34,6 +35,7 @@
 #include <lucent/technique/core_techniques.hpp>
 
 #include "lucentPassDrawing.h"
+#include "lucentPolyDataMesh.h"
 #include "lucentSmpFor.h"
 #include "lucent_glsl.h"
 #include "vtkLucentSurface.h"
@@ -92,6 +94,59 @@ std::string clampedToTwin(const PassKnob& k, const std::string& value) {
   return text;
 }
 
+/// The renderer's visible opaque actors with a mapper, in prop order.
+std::vector<vtkActor*> opaqueActors(vtkRenderer* renderer) {
+  std::vector<vtkActor*> out;
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  for (vtkProp* prop = props->GetNextProp(it); prop; prop = props->GetNextProp(it)) {
+    auto* actor = vtkActor::SafeDownCast(prop);
+    if (actor && actor->GetVisibility() && actor->GetMapper() &&
+        !actor->HasTranslucentPolygonalGeometry())
+      out.push_back(actor);
+  }
+  return out;
+}
+
+/// An actor whose data is marked as an inner body (lucentPolyDataMesh.h's kInnerMaterialArray).
+bool isInnerBody(vtkActor* actor) {
+  return !lucent::vtkadapter::innerMaterialOf(actor->GetMapper()->GetInputDataObject(0, 0)).empty();
+}
+
+/// The inner-body actors inside `surface`'s bounds, as inclusions in its millimetre frame; appends
+/// what they were built from to `key`. Inside tests are not set: taulut voxelises the surfaces.
+std::vector<lt::Inclusion> innerBodiesWithin(const vtkLucentSurface& surface,
+                                             const std::vector<vtkActor*>& inner,
+                                             std::string& key) {
+  const glm::dvec3 centre(surface.GetCentre()[0], surface.GetCentre()[1], surface.GetCentre()[2]);
+  const double radius = surface.GetRadius(), scale = surface.GetMillimetresPerUnit();
+  std::vector<lt::Inclusion> out;
+  for (vtkActor* actor : inner) {
+    double b[6];
+    actor->GetBounds(b);
+    const glm::dvec3 lo(b[0], b[2], b[4]), hi(b[1], b[3], b[5]);
+    if (glm::length(lo - centre) > radius || glm::length(hi - centre) > radius) continue;
+    vtkDataObject* data = actor->GetMapper()->GetInputDataObject(0, 0);
+    vtkNew<vtkMatrix4x4> matrix;
+    actor->GetMatrix(matrix);
+    for (auto& body : lucent::vtkadapter::innerBodiesOf(data, matrix)) {
+      const auto material = lucent::optics::findMaterial(body.material);
+      if (!material)
+        throw lt::RequestError(
+            "an inner body's material '" + body.material +
+            "' is not a measured material; use one of: " + lucent::optics::measuredMaterialNames());
+      lt::Inclusion inc;
+      inc.surface = body.surface.mesh;
+      for (auto& p : inc.surface.positions) p = glm::vec3((glm::dvec3(p) - centre) * scale);
+      inc.medium.material = *material;
+      inc.description = material->name + " inner body";
+      out.push_back(std::move(inc));
+    }
+    key += " inner " + std::to_string(data->GetMTime()) + "/" + std::to_string(actor->GetMTime());
+  }
+  return out;
+}
 }  // namespace
 
 struct vtkLucentPass::Internals {
@@ -521,7 +576,8 @@ bool vtkLucentPass::ShadeSurface(vtkOpenGLRenderWindow* window, vtkLucentSurface
 
 bool vtkLucentPass::ShadeTauLut(vtkOpenGLRenderWindow* window, const lt::Technique& taulut,
                                 const lt::KnobValues& knobs, vtkLucentSurface* surface,
-                                const FrameSetup& frame, int width, int height) {
+                                const std::vector<vtkActor*>& inner, const FrameSetup& frame,
+                                int width, int height) {
   Internals& I = *this->Impl;
   lt::SceneDescription scene;
   scene.meshName = "the actor's data";
@@ -537,6 +593,12 @@ bool vtkLucentPass::ShadeTauLut(vtkOpenGLRenderWindow* window, const lt::Techniq
   std::string key = std::to_string(surface->GetBuildCount());
   for (const auto& k : taulut.knobs)
     if (k.invalidates == lt::Phase::Prepare) key += " " + k.name + "=" + knobs.text(k.name);
+  try {
+    scene.inclusions = innerBodiesWithin(*surface, inner, key);
+  } catch (const std::exception& e) {
+    this->ReportError(std::string("vtkLucentPass (") + taulut.name + "): " + e.what());
+    return false;
+  }
   auto& lut = I.tauLuts[surface];
   if (!lut) lut = vtkSmartPointer<vtkLucentTauLut>::New();
   std::string error;
@@ -588,14 +650,17 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
   if (!this->SetUpFrame(renderer, frame)) return false;
 
   std::map<vtkActor*, vtkSmartPointer<vtkLucentSurface>> seen;
-  vtkPropCollection* props = renderer->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  for (vtkProp* prop = props->GetNextProp(it); prop; prop = props->GetNextProp(it)) {
-    auto* actor = vtkActor::SafeDownCast(prop);
-    if (!actor || !actor->GetVisibility() || !actor->GetMapper() ||
-        actor->HasTranslucentPolygonalGeometry())
-      continue;
+  const std::vector<vtkActor*> actors = opaqueActors(renderer);
+  std::vector<vtkActor*> inner;
+  for (vtkActor* actor : actors)
+    if (isInnerBody(actor)) inner.push_back(actor);
+  if (!inner.empty() && !twin->capabilities.inclusions)
+    this->ReportError("vtkLucentPass: " + twin->name + " takes no inner bodies (" +
+                      std::to_string(inner.size()) + " actors carry " +
+                      lucent::vtkadapter::kInnerMaterialArray +
+                      "; they are not drawn as translucent); use a technique that does: taulut");
+  for (vtkActor* actor : actors) {
+    if (isInnerBody(actor)) continue;  // shaded as part of the object around it
     auto found = I.surfaces.find(actor);
     vtkSmartPointer<vtkLucentSurface> surface =
         found != I.surfaces.end() ? found->second : vtkSmartPointer<vtkLucentSurface>::New();
@@ -606,7 +671,8 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
     ++this->TranslucentActorCount;
     this->WarnOutsideRange(*surface, *twin, knobs);
     if (twin->name == "taulut") {
-      if (!this->ShadeTauLut(window, *twin, knobs, surface, frame, width, height)) return false;
+      if (!this->ShadeTauLut(window, *twin, knobs, surface, inner, frame, width, height))
+        return false;
       continue;
     }
     if (!this->RenderLightDepth(window, surface, frame) ||

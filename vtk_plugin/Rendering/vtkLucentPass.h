@@ -5,7 +5,11 @@
 /// 2016: vtkLucentTauLut.h).
 ///
 /// Every visible, opaque vtkActor with polygons in the renderer is shaded as one homogeneous
-/// translucent object (light does not cross from one actor to another). Per frame and per actor:
+/// translucent object (light does not cross from one actor to another), except actors whose data
+/// is marked as an inner body (lucent::vtkadapter::markInnerBody, field data LucentInnerMaterial):
+/// taulut fills them with their material inside the actor around them (the wine in a bottle);
+/// tsis takes none and reports them. A cavity is an inner shell of the actor's own surface. Per
+/// frame and per actor:
 ///  0. depth of the object from the light (shadows);
 ///  1. irradiance E' = E A_S / A_T rendered into the object's texture atlas, with the position map
 ///  (Eq. 4-7);
@@ -177,7 +181,8 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   /// view, per-pixel sum.
   bool ShadeTauLut(vtkOpenGLRenderWindow* window, const lucent::technique::Technique& taulut,
                    const lucent::technique::KnobValues& knobs, vtkLucentSurface* surface,
-                   const FrameSetup& frame, int width, int height);
+                   const std::vector<vtkActor*>& inner, const FrameSetup& frame, int width,
+                   int height);
   /// The technique's knobs as its twin takes them (the given ones clamped to the twin's range).
   lucent::technique::KnobValues TwinValues(const lucent::technique::Technique& t) const;
   void RefreshTsisKnobs();
