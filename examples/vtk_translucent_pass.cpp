@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -42,6 +43,7 @@ struct Options {
   int size = 512, frames = 5;
   double sizeMm = 30;
   bool sweep = false;
+  std::string sweepSpec;  ///< KNOB=V1,V2,...; empty: the technique's default sweep
   std::vector<std::pair<std::string, std::string>> knobs;
 };
 
@@ -60,11 +62,14 @@ Options parse(int argc, char** argv) {
       o.material = argv[++i];
     else if (a == "--shape" && more)
       o.shape = argv[++i];
+    else if (a == "--fill" && more)
+      o.fill = argv[++i];
     else if (a == "--size-mm" && more)
       o.sizeMm = std::atof(argv[++i]);
-    else if (a == "--sweep")
+    else if (a == "--sweep") {
       o.sweep = true;
-    else if (a == "--knob" && more) {
+      if (more && std::string(argv[i + 1]).find('=') != std::string::npos) o.sweepSpec = argv[++i];
+    } else if (a == "--knob" && more) {
       const std::string kv = argv[++i];
       const auto eq = kv.find('=');
       if (eq == std::string::npos) {
@@ -182,7 +187,15 @@ int main(int argc, char** argv) {
   if (o.sweep) {
     const auto registry = lucent::technique::coreRegistry();
     const lucent::technique::Technique& t = registry.get(o.technique);
-    for (const auto& sweep : t.defaultSweep) {
+    std::vector<lucent::technique::Sweep> sweeps = t.defaultSweep;
+    if (!o.sweepSpec.empty()) {
+      const auto eq = o.sweepSpec.find('=');
+      lucent::technique::Sweep given{o.sweepSpec.substr(0, eq), {}};
+      std::stringstream values(o.sweepSpec.substr(eq + 1));
+      for (std::string v; std::getline(values, v, ',');) given.values.push_back(v);
+      sweeps = {given};
+    }
+    for (const auto& sweep : sweeps) {
       std::printf("%14s %12s %12s\n", sweep.knob.c_str(), "ms/frame", "frames/s");
       for (const auto& value : sweep.values) {
         lucent->SetKnob((t.name + "." + sweep.knob).c_str(), value.c_str());
