@@ -3,9 +3,9 @@
 #include <cmath>
 
 #include <lucent/atlas/hybrid.hpp>
-#include <lucent/atlas/radial_sum.hpp>
 #include <lucent/atlas/ring_filter.hpp>
 #include <lucent/optics/materials.hpp>
+#include <lucent/reference/radial_table_sum.hpp>
 
 using namespace lucent;
 
@@ -16,7 +16,8 @@ optics::Dipole<double> dipoleOf(const char* name) {
 }
 }  // namespace
 
-TEST_CASE("Ring filter: strata hold equal importance, masses sum to the covered share of int f 2 pi r") {
+TEST_CASE(
+    "Ring filter: strata hold equal importance, masses sum to the covered share of int f 2 pi r") {
   for (const char* name : {"skin1", "marble", "ketchup", "spectralon"}) {
     CAPTURE(name);
     const auto d = dipoleOf(name);
@@ -26,8 +27,8 @@ TEST_CASE("Ring filter: strata hold equal importance, masses sum to the covered 
     REQUIRE(ring.sampleCount() == 16 * 8 + 1);
     CHECK(ring.radius[0] == 0);
     for (std::size_t k = 1; k < ring.radius.size(); ++k) CHECK(ring.radius[k] > ring.radius[k - 1]);
-    // Sum of masses = closed-form cumulative at the outer radius (dipole.hpp's CDF, independent of the
-    // filter's own trapezoid), to the filter's quadrature accuracy.
+    // Sum of masses = closed-form cumulative at the outer radius (dipole.hpp's CDF, independent of
+    // the filter's own trapezoid), to the filter's quadrature accuracy.
     glm::dvec3 sum(0);
     for (const auto& m : ring.mass) sum += m;
     const auto exact = d.cumulative(ring.outerRadius);
@@ -35,7 +36,8 @@ TEST_CASE("Ring filter: strata hold equal importance, masses sum to the covered 
     // Flat, uniformly lit surface: every sample sees |x - x_o| = r_k, so the filter returns
     // rho * sum of masses exactly: the ratio estimator is exact there.
     for (std::size_t k = 0; k < ring.radius.size(); ++k)
-      for (int c = 0; c < 3; ++c) CHECK(ring.profileAt[k][c] == doctest::Approx(d.rd(ring.radius[k])[c]));
+      for (int c = 0; c < 3; ++c)
+        CHECK(ring.profileAt[k][c] == doctest::Approx(d.rd(ring.radius[k])[c]));
   }
 }
 
@@ -56,7 +58,8 @@ TEST_CASE("Hybrid profiles: Rd Wl + Rd Wg = Rd within the tables' bounds, for ev
     for (double r = 0; r <= 50; r += 0.0137) {
       const auto sum = p.local(float(r)) + p.global(float(r));
       for (int c = 0; c < 3; ++c)
-        REQUIRE(std::abs(sum[c] - d.rd(r)[c]) <= 2e-3 * std::max(d.rd(r)[c], 1e-6 * peak[c]) + 1e-6 * d.rd(r)[c] + 1e-30);
+        REQUIRE(std::abs(sum[c] - d.rd(r)[c]) <=
+                2e-3 * std::max(d.rd(r)[c], 1e-6 * peak[c]) + 1e-6 * d.rd(r)[c] + 1e-30);
     }
   }
 }
@@ -65,16 +68,17 @@ TEST_CASE("Table sum kernel equals the scalar table lookup, and is 0 beyond rMax
   const auto d = optics::Dipole<float>::make(optics::Rgb<float>(0.032f, 0.17f, 0.48f),
                                              optics::Rgb<float>(0.74f, 0.88f, 1.01f), 1.3f);
   const optics::RdTable<float> table(d, 20.0f);
-  const atlas::PlanarRadialTable planar(table);
+  const reference::PlanarRadialTable planar(table);
   std::vector<float> x, y, z, w0, w1, w2;
   for (int i = 0; i < 3000; ++i) {
     const float t = float(i) * 0.01f;
     x.push_back(std::sin(t) * t), y.push_back(std::cos(1.3f * t)), z.push_back(0.1f * t);
     w0.push_back(1.0f + 0.1f * float(i % 7)), w1.push_back(0.5f), w2.push_back(float(i % 3));
   }
-  const reference::RdKernelSamples s{x.data(), y.data(), z.data(), w0.data(), w1.data(), w2.data(), x.size()};
+  const reference::RdKernelSamples s{x.data(),  y.data(),  z.data(), w0.data(),
+                                     w1.data(), w2.data(), x.size()};
   double out[3];
-  atlas::radialTableSum(s, planar, 0.3f, -0.2f, 1.0f, out);
+  reference::radialTableSum(s, planar, 0.3f, -0.2f, 1.0f, out);
   double expect[3] = {0, 0, 0};
   for (std::size_t i = 0; i < x.size(); ++i) {
     const double dx = x[i] - 0.3, dy = y[i] + 0.2, dz = z[i] - 1.0;
@@ -84,6 +88,6 @@ TEST_CASE("Table sum kernel equals the scalar table lookup, and is 0 beyond rMax
   for (int c = 0; c < 3; ++c) CHECK(out[c] == doctest::Approx(expect[c]).epsilon(1e-4));
   // All samples beyond rMax: exactly zero.
   for (auto& v : x) v += 100.0f;
-  atlas::radialTableSum(s, planar, 0, 0, 0, out);
+  reference::radialTableSum(s, planar, 0, 0, 0, out);
   for (double v : out) CHECK(v == 0.0);
 }

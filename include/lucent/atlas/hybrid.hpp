@@ -1,8 +1,9 @@
 #pragma once
 /// @file hybrid.hpp
 /// @brief The hybrid method (Chang et al. 2008 Sec. 4): B = B_l + B_g with
-/// B_l = int E Rd Wl dA by translucent shadow maps and B_g = int E Rd Wg dA by texture-space importance
-/// sampling. Also the plain translucent-shadow-map method (f = Rd, no split) as a baseline.
+/// B_l = int E Rd Wl dA by translucent shadow maps and B_g = int E Rd Wg dA by texture-space
+/// importance sampling. Also the plain translucent-shadow-map method (f = Rd, no split) as a
+/// baseline.
 #include <memory>
 #include <vector>
 
@@ -18,17 +19,26 @@ struct HybridProfiles {
   double rp = 0, k = kHybridK;
   optics::RadialTable<float> local, global;
 
-  HybridProfiles(const optics::Dipole<double>& d, double rp_, double rMax, double k_ = kHybridK)
-      : rp(rp_), k(k_),
-        local([&](float r) { return optics::Rgb<float>(d.rd(double(r)) * localWeight(double(r), rp_, k_)); }, float(rMax)),
-        global([&](float r) { return optics::Rgb<float>(d.rd(double(r)) * globalWeight(double(r), rp_, k_)); }, float(rMax)) {}
+  HybridProfiles(const optics::Profile<double>& d, double rp_, double rMax, double k_ = kHybridK)
+      : rp(rp_),
+        k(k_),
+        local(
+            [&](float r) {
+              return optics::Rgb<float>(d.rd(double(r)) * localWeight(double(r), rp_, k_));
+            },
+            float(rMax)),
+        global(
+            [&](float r) {
+              return optics::Rgb<float>(d.rd(double(r)) * globalWeight(double(r), rp_, k_));
+            },
+            float(rMax)) {}
 };
 
 /// The local term: one translucent shadow map per light, each filtered with the same ring filter.
 class LocalTermEvaluator {
  public:
-  LocalTermEvaluator(std::vector<TranslucentShadowMap> maps, RingFilter ring, const optics::RadialTable<float>& profile,
-                     float eta)
+  LocalTermEvaluator(std::vector<TranslucentShadowMap> maps, RingFilter ring,
+                     const optics::RadialTable<float>& profile, float eta)
       : mMaps(std::move(maps)), mRing(std::move(ring)), mProfile(profile), mFt(eta) {}
 
   glm::dvec3 radiosity(const glm::dvec3& xo) const {
@@ -38,7 +48,9 @@ class LocalTermEvaluator {
     return b;
   }
   double fresnelOverPi(double cosOut) const { return double(mFt(float(cosOut))) / optics::kPi; }
-  glm::dvec3 radiance(const glm::dvec3& xo, double cosOut) const { return radiosity(xo) * fresnelOverPi(cosOut); }
+  glm::dvec3 radiance(const glm::dvec3& xo, double cosOut) const {
+    return radiosity(xo) * fresnelOverPi(cosOut);
+  }
   const RingFilter& ring() const { return mRing; }
 
  private:
@@ -51,10 +63,15 @@ class LocalTermEvaluator {
 /// B = B_l + B_g.
 class HybridEvaluator {
  public:
-  HybridEvaluator(const LocalTermEvaluator& local, const TsisEvaluator& global) : mLocal(local), mGlobal(global) {}
-  glm::dvec3 radiosity(const glm::dvec3& xo) const { return mLocal.radiosity(xo) + mGlobal.radiosity(xo); }
+  HybridEvaluator(const LocalTermEvaluator& local, const TsisEvaluator& global)
+      : mLocal(local), mGlobal(global) {}
+  glm::dvec3 radiosity(const glm::dvec3& xo) const {
+    return mLocal.radiosity(xo) + mGlobal.radiosity(xo);
+  }
   double fresnelOverPi(double cosOut) const { return mGlobal.fresnelOverPi(cosOut); }
-  glm::dvec3 radiance(const glm::dvec3& xo, double cosOut) const { return radiosity(xo) * fresnelOverPi(cosOut); }
+  glm::dvec3 radiance(const glm::dvec3& xo, double cosOut) const {
+    return radiosity(xo) * fresnelOverPi(cosOut);
+  }
 
  private:
   const LocalTermEvaluator& mLocal;

@@ -4,15 +4,15 @@
 /// Sec. 4.1): Rd = Rd Wl + Rd Wg with
 ///   Wl(r) = 1 - 0.5 e^{(r - Rp) K}   for r <= Rp,      Wl(r) = 0.5 e^{-(r - Rp) K}   for r > Rp,
 ///   Wg = 1 - Wl,  K = 1.5 (per mm).
-/// The extracted paper text prints e^{-(r-Rp)K} in both branches, which makes Wl negative for r < Rp - ln2/K;
-/// the form above is the continuous one (Wl = 0.5 at Rp, Wl(0) ~ 1, Wl -> 0 far away) that Fig. 3 shows.
-/// Rp is the largest r, over the channels, where the importance Rd(r) 2 pi r falls to the user's bound c
-/// (Fig. 4).
+/// The extracted paper text prints e^{-(r-Rp)K} in both branches, which makes Wl negative for r <
+/// Rp - ln2/K; the form above is the continuous one (Wl = 0.5 at Rp, Wl(0) ~ 1, Wl -> 0 far away)
+/// that Fig. 3 shows. Rp is the largest r, over the channels, where the importance Rd(r) 2 pi r
+/// falls to the user's bound c (Fig. 4).
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "../optics/dipole.hpp"
+#include "../optics/profile.hpp"
 
 namespace lucent::atlas {
 
@@ -22,19 +22,28 @@ inline constexpr double kHybridK = 1.5;  ///< the paper's constant K (mm^-1)
 inline double localWeight(double r, double rp, double k = kHybridK) {
   return r <= rp ? 1.0 - 0.5 * std::exp((r - rp) * k) : 0.5 * std::exp(-(r - rp) * k);
 }
-inline double globalWeight(double r, double rp, double k = kHybridK) { return 1.0 - localWeight(r, rp, k); }
+inline double globalWeight(double r, double rp, double k = kHybridK) {
+  return 1.0 - localWeight(r, rp, k);
+}
 
 /// Importance of distance r for one channel: Rd(r) 2 pi r (mm^-1).
-inline double importance(const optics::DipoleChannel<double>& ch, double r) { return ch.rd(r) * 2 * optics::kPi * r; }
+/// @tparam Channel optics::DipoleChannel or optics::ProfileChannel (rd, scatters, reach).
+template <class Channel>
+double importance(const Channel& ch, double r) {
+  return ch.rd(r) * 2 * optics::kPi * r;
+}
 
 /// Largest r with importance(r) = c in one channel, or 0 if the importance never reaches c.
-/// Terminates for every material: past its peak the importance falls at least as 1/r^2 (sigma_a = 0).
-inline double importanceRadius(const optics::DipoleChannel<double>& ch, double c) {
+/// Terminates for every material: past its peak the importance falls at least as 1/r^2 (sigma_a =
+/// 0).
+template <class Channel>
+double importanceRadius(const Channel& ch, double c) {
   if (!(c > 0)) throw std::invalid_argument("importance bound c must be > 0");
-  if (ch.alphaPrime <= 0) return 0;
-  // The importance rises from 0 to one peak (on the scale of z_r, well inside 4 z_v) and then falls:
-  // the last crossing lies beyond the peak. Bracket it by doubling outwards from the peak, then bisect.
-  const double scanEnd = 4 * ch.zv;
+  if (!ch.scatters()) return 0;
+  // The importance rises to one peak (on the scale of z_r, well inside the profile's reach) and
+  // then falls: the last crossing lies beyond the peak. Bracket it by doubling outwards from the
+  // peak, then bisect.
+  const double scanEnd = ch.reach();
   double lo = 0, peak = 0;
   for (int i = 1; i <= 400; ++i) {
     const double r = scanEnd * i / 400.0, f = importance(ch, r);
@@ -52,7 +61,7 @@ inline double importanceRadius(const optics::DipoleChannel<double>& ch, double c
 }
 
 /// Rp: the largest importance radius over the three channels (0: nothing is local, all global).
-inline double hybridRp(const optics::Dipole<double>& d, double c) {
+inline double hybridRp(const optics::Profile<double>& d, double c) {
   double rp = 0;
   for (const auto& ch : d.channel) rp = std::max(rp, importanceRadius(ch, c));
   return rp;

@@ -9,19 +9,23 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "../image/image.hpp"
-#include "../optics/dipole.hpp"
+#include "../optics/dipole_lut.hpp"
+#include "../optics/profile.hpp"
 #include "../scene/camera.hpp"
 #include "../scene/irradiance.hpp"
 #include "../util/parallel.hpp"
 #include "near_field.hpp"
+#include "radial_table_sum.hpp"
 #include "rd_sum_kernel.hpp"
 #include "surface_samples.hpp"
 
@@ -70,12 +74,12 @@ class DipoleTruth {
     glm::dvec3 transmittedPower{0};  ///< sum E_i A_i: the power entering the surface
   };
 
-  DipoleTruth(const SurfaceSamples& samples, const optics::Dipole<T>& dipole,
+  DipoleTruth(const SurfaceSamples& samples, const optics::Profile<T>& profile,
               const std::vector<scene::Light>& lights, const scene::RayCaster& caster,
               const scene::IrradianceSettings& irr,
               const util::ParallelFor& parallelFor = util::serialFor,
               const util::Progress& progress = {})
-      : mDipole(dipole) {
+      : mProfile(profile) {
     mStats.samples = samples.size();
     mStats.spacing = samples.spacing;
     std::vector<glm::dvec3> weighted(samples.size());
@@ -99,12 +103,16 @@ class DipoleTruth {
       for (int c = 0; c < 3; ++c) mW[c].push_back(T(w[c]));
     }
     mStats.litSamples = mX.size();
+    if (mProfile.isPolePair())
+      mKernel = RdKernelConstants::from(mProfile);
+    else if (!samples.position.empty())
+      mTable = profileTable(samples);
   }
 
   /// B(xo) = sum_i E_i A_i Rd(|x_i - xo|) (Eq. 3), mm^-2 times the irradiance unit, with the
   /// samples within nearField().radius() of xo integrated as a disc (near_field.hpp).
   glm::dvec3 radiosity(const glm::dvec3& xo) const {
-    return pointSum(xo) + mNear.correction(xo, mDipole);
+    return pointSum(xo) + mNear.correction(xo, mProfile);
   }
 
   /// The plain point sum of Eq. 3 (what a spacing far below the mean free path converges with).
@@ -117,20 +125,22 @@ class DipoleTruth {
     for (std::size_t i = 0; i < n; ++i) {
       const T dx = mX[i] - ox, dy = mY[i] - oy, dz = mZ[i] - oz;
       const T r = std::sqrt(dx * dx + dy * dy + dz * dz);
-      for (int c = 0; c < 3; ++c) sum[c] += double(mW[c][i] * mDipole.channel[c].rd(r));
+      for (int c = 0; c < 3; ++c) sum[c] += double(mW[c][i] * mProfile.channel[c].rd(r));
     }
     return {sum[0], sum[1], sum[2]};
   }
 
   /// L(xo, wo) = (1/pi) Ft(eta, wo) B(xo) (Eq. 2); cosOut = n.wo at xo.
   glm::dvec3 radiance(const glm::dvec3& xo, double cosOut) const {
-    const double ft = optics::fresnelTransmittance(cosOut, double(mDipole.eta));
-    return radiosity(xo) * (ft / optics::kPi);
+    const double ft = optics::fresnelTransmittance(cosOut, double(mProfile.eta));
+    return radiosity(xo) * (ft * double(mProfile.exitScale) / optics::kPi);
   }
 
   const Stats& stats() const { return mStats; }
   const NearField& nearField() const { return mNear; }
-  const optics::Dipole<T>& dipole() const { return mDipole; }
+  const optics::Profile<T>& profile() const { return mProfile; }
+  /// Nodes of the radial table the float sum looks up (0: the closed-form kernel).
+  std::size_t tableNodes() const { return mTable ? mTable->size() : 0; }
 
   /// The lit samples, structure-of-arrays: positions, E_i A_i per channel, and areas A_i.
   std::size_t litCount() const { return mX.size(); }
@@ -147,12 +157,27 @@ class DipoleTruth {
     const RdKernelSamples samples{mX.data(),    mY.data(),    mZ.data(), mW[0].data(),
                                   mW[1].data(), mW[2].data(), mX.size()};
     double out[3];
-    rdSumFloat(samples, mKernel, float(xo.x), float(xo.y), float(xo.z), out);
+    if (mTable)
+      radialTableSum(samples, *mTable, float(xo.x), float(xo.y), float(xo.z), out);
+    else
+      rdSumFloat(samples, mKernel, float(xo.x), float(xo.y), float(xo.z), out);
     return {out[0], out[1], out[2]};
   }
 
-  optics::Dipole<T> mDipole;
-  RdKernelConstants mKernel = RdKernelConstants::from(mDipole);
+  /// The profile as a radial table to the largest distance between two samples (the bounding box's
+  /// diagonal), with RadialTable's stated bound.
+  std::shared_ptr<const PlanarRadialTable> profileTable(const SurfaceSamples& samples) const {
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+    for (const auto& p : samples.position) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    const float rMax = float(std::max(glm::length(hi - lo), 1e-9) * 1.001);
+    const optics::RadialTable<float> table(
+        [this](float r) { return optics::Rgb<float>(mProfile.rd(T(r))); }, rMax);
+    return std::make_shared<PlanarRadialTable>(table);
+  }
+
+  optics::Profile<T> mProfile;
+  RdKernelConstants mKernel{};
+  std::shared_ptr<const PlanarRadialTable> mTable;
   std::vector<T> mX, mY, mZ, mW[3];
   std::vector<double> mArea;
   NearField mNear;

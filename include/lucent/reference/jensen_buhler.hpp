@@ -25,7 +25,7 @@ class JensenBuhlerTree {
   /// @param maxLeafSamples samples a leaf may hold before it splits
   explicit JensenBuhlerTree(const DipoleTruth<T>& truth, double epsilon,
                             std::size_t maxLeafSamples = 8)
-      : mDipole(truth.dipole()),
+      : mDipole(truth.profile()),
         mNear(&truth.nearField()),
         mEpsilon(epsilon),
         mLeafSize(std::max<std::size_t>(1, maxLeafSamples)) {
@@ -87,8 +87,8 @@ class JensenBuhlerTree {
   }
 
   glm::dvec3 radiance(const glm::dvec3& xo, double cosOut) const {
-    return radiosity(xo) *
-           (optics::fresnelTransmittance(cosOut, double(mDipole.eta)) / optics::kPi);
+    return radiosity(xo) * (optics::fresnelTransmittance(cosOut, double(mDipole.eta)) *
+                            double(mDipole.exitScale) / optics::kPi);
   }
 
   std::size_t nodeCount() const { return mNodes.size(); }
@@ -141,7 +141,7 @@ class JensenBuhlerTree {
     }
   }
 
-  optics::Dipole<T> mDipole;
+  optics::Profile<T> mDipole;
   const NearField* mNear;  ///< the truth's, which outlives the tree
   double mEpsilon;
   std::size_t mLeafSize;

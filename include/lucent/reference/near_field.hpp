@@ -25,7 +25,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "../optics/dipole.hpp"
+#include "../optics/profile.hpp"
 
 namespace lucent::reference {
 
@@ -66,7 +66,7 @@ class NearField {
   /// What to add to the full point sum at xo: the disc integral minus the near samples' point
   /// terms (computed exactly as the sum computed them, so they cancel).
   template <class T>
-  glm::dvec3 correction(const glm::dvec3& xo, const optics::Dipole<T>& dipole) const {
+  glm::dvec3 correction(const glm::dvec3& xo, const optics::Profile<T>& dipole) const {
     if (mKeys.empty()) return glm::dvec3(0);
     glm::dvec3 pointTerms(0), power(0);
     double area = 0;
@@ -91,7 +91,11 @@ class NearField {
     glm::dvec3 out;
     for (int ch = 0; ch < 3; ++ch) {
       const double disc = power[ch] / area * double(dipole.channel[ch].cumulative(T(mRadius)));
-      out[ch] = discWeight(rdWidth(dipole.channel[ch])) * (disc - pointTerms[ch]);
+      // A profile singular at r = 0 (beam diffusion, Burley) is no point-sum integrand there:
+      // always the disc.
+      const auto& channel = dipole.channel[ch];
+      const double weight = channel.isPolePair() ? discWeight(double(channel.width())) : 1.0;
+      out[ch] = weight * (disc - pointTerms[ch]);
     }
     return out;
   }
@@ -100,12 +104,6 @@ class NearField {
   double discWeight(double width) const {
     const double spacing = mRadius / kRadiusInSpacings;
     return std::clamp((spacing / width - 1) / 3, 0.0, 1.0);
-  }
-  /// The length Rd falls off over: l_u, or 1/sigma_tr where absorption cuts it shorter.
-  template <class Channel>
-  static double rdWidth(const Channel& c) {
-    const double tail = c.sigmaTr > 0 ? 1 / double(c.sigmaTr) : double(c.zr);
-    return std::min(double(c.zr), tail);
   }
 
  private:

@@ -1,44 +1,58 @@
 #pragma once
 /// @file rd_sum_kernel.hpp
-/// @brief The inner loop of the brute-force truth: B(xo) = sum_i w_i Rd(|x_i - xo|) in three channels,
-/// in float, vectorised (see fast_exp.hpp) and cloned for AVX2. Partial sums of 1024 terms are added
-/// in double, so rounding does not grow with the number of samples.
+/// @brief The inner loop of the brute-force truth: B(xo) = sum_i w_i Rd(|x_i - xo|) in three
+/// channels, in float, vectorised (see fast_exp.hpp) and cloned for AVX2. Partial sums of 1024
+/// terms are added in double, so rounding does not grow with the number of samples.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 
 #include "../optics/constants.hpp"
-#include "../optics/dipole.hpp"
 #include "../optics/fast_exp.hpp"
+#include "../optics/profile.hpp"
 #include "../util/simd.hpp"
 
 namespace lucent::reference {
 
-/// The per-channel constants of Rd in float; a channel that does not scatter has k = alpha'/4pi = 0.
+/// The per-channel constants of a real and a virtual source in float (the classic and the better
+/// dipole); a channel that does not scatter has k = kFluence = 0.
 struct RdKernelConstants {
-  float zr[3], zv[3], zr2[3], zv2[3], sigmaTr[3], k[3];
+  float zr[3], zv[3], zr2[3], zv2[3], sigmaTr[3], k[3], kFluence[3];
+  bool fluence = false;  ///< any kFluence != 0 (the better dipole); the classic skips those terms
 
+  /// @pre profile.isPolePair()
   template <class T>
-  static RdKernelConstants from(const optics::Dipole<T>& d) {
+  static RdKernelConstants from(const optics::Profile<T>& profile) {
     RdKernelConstants c{};
     for (int i = 0; i < 3; ++i) {
-      const auto& ch = d.channel[i];
+      const auto& ch = profile.channel[i].poles;
       c.zr[i] = float(ch.zr), c.zv[i] = float(ch.zv), c.sigmaTr[i] = float(ch.sigmaTr);
       c.zr2[i] = c.zr[i] * c.zr[i], c.zv2[i] = c.zv[i] * c.zv[i];
-      c.k[i] = float(double(ch.alphaPrime) / (4.0 * optics::kPi));
+      const double scale = double(ch.alphaPrime) / (4.0 * optics::kPi);
+      c.k[i] = float(scale * double(ch.fluxWeight));
+      c.kFluence[i] = float(scale * double(ch.fluenceWeight));
+      c.fluence = c.fluence || c.kFluence[i] != 0.0f;
     }
     return c;
+  }
+  template <class T>
+  static RdKernelConstants from(const optics::Dipole<T>& dipole) {
+    return from(optics::Profile<T>(dipole));
   }
 };
 
 namespace detail {
-/// Rd of one channel at squared distance r2 (Table 1): real source at depth zr, virtual at height zv.
-/// A plain function of values (a capturing lambda here stops GCC from vectorising the loop).
+/// Rd of one channel at squared distance r2 (Table 1): real source at depth zr, virtual at height
+/// zv. A plain function of values (a capturing lambda here stops GCC from vectorising the loop).
+template <bool kFluence>
 inline float rdChannel(float r2, const RdKernelConstants& k, int c) {
   const float zr = k.zr[c], zv = k.zv[c], st = k.sigmaTr[c];
   const float dr = std::sqrt(r2 + k.zr2[c]), dv = std::sqrt(r2 + k.zv2[c]);
   const float er = optics::expNonPositive(-st * dr), ev = optics::expNonPositive(-st * dv);
-  return k.k[c] * (zr * (1.0f + st * dr) * er / (dr * dr * dr) + zv * (1.0f + st * dv) * ev / (dv * dv * dv));
+  const float flux = k.k[c] * (zr * (1.0f + st * dr) * er / (dr * dr * dr) +
+                               zv * (1.0f + st * dv) * ev / (dv * dv * dv));
+  if constexpr (!kFluence) return flux;
+  return flux + k.kFluence[c] * (er / dr - ev / dv);  // the better dipole's fluence term
 }
 }  // namespace detail
 
@@ -48,10 +62,17 @@ struct RdKernelSamples {
   std::size_t n;
 };
 
-LUCENT_VECTOR_CLONES inline void rdSumFloat(const RdKernelSamples& s, const RdKernelConstants& k, float ox, float oy,
-                                            float oz, double out[3]) {
-  // Locals, not struct members, inside the loop: GCC will not vectorise loads through s.x etc. because a
-  // float store could (as far as it knows) change the pointers.
+namespace detail {
+// Always inlined, so that it is compiled for each of rdSumFloat's target clones.
+template <bool kFluence>
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+inline void
+rdSumFloatLoop(const RdKernelSamples& s, const RdKernelConstants& k, float ox, float oy, float oz,
+               double out[3]) {
+  // Locals, not struct members, inside the loop: GCC will not vectorise loads through s.x etc.
+  // because a float store could (as far as it knows) change the pointers.
   const float *x = s.x, *y = s.y, *z = s.z, *w0 = s.w0, *w1 = s.w1, *w2 = s.w2;
   const RdKernelConstants kc = k;
   double total0 = 0, total1 = 0, total2 = 0;
@@ -63,13 +84,22 @@ LUCENT_VECTOR_CLONES inline void rdSumFloat(const RdKernelSamples& s, const RdKe
     for (std::size_t i = begin; i < end; ++i) {
       const float dx = x[i] - ox, dy = y[i] - oy, dz = z[i] - oz;
       const float r2 = dx * dx + dy * dy + dz * dz;
-      s0 += w0[i] * detail::rdChannel(r2, kc, 0);
-      s1 += w1[i] * detail::rdChannel(r2, kc, 1);
-      s2 += w2[i] * detail::rdChannel(r2, kc, 2);
+      s0 += w0[i] * rdChannel<kFluence>(r2, kc, 0);
+      s1 += w1[i] * rdChannel<kFluence>(r2, kc, 1);
+      s2 += w2[i] * rdChannel<kFluence>(r2, kc, 2);
     }
     total0 += s0, total1 += s1, total2 += s2;
   }
   out[0] = total0, out[1] = total1, out[2] = total2;
+}
+}  // namespace detail
+
+LUCENT_VECTOR_CLONES inline void rdSumFloat(const RdKernelSamples& s, const RdKernelConstants& k,
+                                            float ox, float oy, float oz, double out[3]) {
+  if (k.fluence)
+    detail::rdSumFloatLoop<true>(s, k, ox, oy, oz, out);
+  else
+    detail::rdSumFloatLoop<false>(s, k, ox, oy, oz, out);
 }
 
 }  // namespace lucent::reference

@@ -41,7 +41,8 @@ inline std::vector<KnobSpec> dipoleSumKnobs() {
       KnobSpec::integer("env-strata", 16, 1, 256,
                         "environment light: strata x strata directions per sample"),
       KnobSpec::choice("precision", {"float", "double"},
-                       "scalar of the Rd sum (sums accumulate in double)", Phase::Frame)};
+                       "scalar of the Rd sum (sums accumulate in double)", Phase::Frame),
+      profileKnob()};
 }
 
 inline Capabilities dipoleSumCapabilities() {
@@ -107,25 +108,25 @@ class DipoleSum final : public Prepared {
                     Statistics& stats) override {
     FrameResult out;
     if (mKnobs.text("precision") == "double")
-      out.radiosity = sum<double>(scene, request, stats);
+      out.radiosity = sum<double>(scene, request, stats, out);
     else
-      out.radiosity = sum<float>(scene, request, stats);
+      out.radiosity = sum<float>(scene, request, stats, out);
     return out;
   }
 
  private:
   template <class T>
   std::vector<glm::dvec3> sum(const SceneDescription& scene, const ShadeRequest& request,
-                              Statistics& stats) {
-    const auto& m = scene.medium.material;
-    const auto dipole =
-        optics::Dipole<T>::make(optics::Rgb<T>(m.sigmaA), optics::Rgb<T>(m.sigmaSPrime), T(m.eta));
+                              Statistics& stats, FrameResult& out) {
+    const auto profile = profileOf<T>(scene.medium.material, mKnobs);
+    out.exitScale = double(profile.exitScale);
     const scene::IrradianceSettings irr = irradianceSettings(scene, mKnobs);
     const auto truth = stats.timeFrame("irradiance", [&] {
-      return reference::DipoleTruth<T>(mSamples, dipole, scene.lights, *scene.caster, irr,
+      return reference::DipoleTruth<T>(mSamples, profile, scene.lights, *scene.caster, irr,
                                        scene.parallelFor, scene.stage("irradiance"));
     });
     stats.figures["lit_samples"] = double(truth.stats().litSamples);
+    if (truth.tableNodes()) stats.figures["profile_table_nodes"] = double(truth.tableNodes());
     scene.checkCancelled();
     return mSummation(truth, scene, request, stats);
   }
@@ -206,7 +207,7 @@ inline Technique jensenBuhlerTechnique() {
                                  [epsilon](const auto& truth, const SceneDescription& s,
                                            const ShadeRequest& request, Statistics& st) {
                                    using Truth = std::decay_t<decltype(truth)>;
-                                   using T = std::decay_t<decltype(truth.dipole().eta)>;
+                                   using T = std::decay_t<decltype(truth.profile().eta)>;
                                    static_assert(std::is_same_v<Truth, reference::DipoleTruth<T>>);
                                    const auto tree = st.timeFrame("octree", [&] {
                                      return reference::JensenBuhlerTree<T>(truth, epsilon);

@@ -14,6 +14,7 @@
 
 #include "../optics/dipole.hpp"
 #include "../optics/fresnel.hpp"
+#include "../optics/profile.hpp"
 #include "../scene/irradiance.hpp"
 #include "capabilities.hpp"
 #include "knob.hpp"
@@ -29,6 +30,9 @@ struct FrameResult {
   /// Further per-point values (e.g. "stderr", the path tracer's standard error), each named after
   /// the OutputFile knob that asks a front end to write it.
   std::vector<std::pair<std::string, std::vector<glm::dvec3>>> extras;
+  /// L = Ft B exitScale / pi: 1 for the classic dipole's convention, 1/c for the profiles whose B
+  /// is the exitance that crosses the boundary (optics/profile.hpp).
+  double exitScale = 1;
 };
 
 /// What prepare built; a frame reads it.
@@ -100,6 +104,27 @@ inline scene::IrradianceSettings irradianceSettings(const SceneDescription& scen
 inline optics::Dipole<double> dipoleOf(const optics::Material& m) {
   return optics::Dipole<double>::make(m.sigmaA, m.sigmaSPrime, m.eta);
 }
+
+/// The `profile` knob of the techniques that sum a diffusion profile; its choices are the core's
+/// list of models (optics/profile.hpp).
+inline KnobSpec profileKnob() {
+  std::vector<std::string> names;
+  std::string help = "diffusion profile R(r):";
+  for (const auto& info : optics::kProfileModels) {
+    names.emplace_back(info.name);
+    help += " " + std::string(info.name) + " = " + std::string(info.summary) + ";";
+  }
+  help.pop_back();
+  return KnobSpec::choice("profile", names, help, Phase::Frame);
+}
+
+/// The profile the knobs ask for, of the scene's material, in scalar T.
+template <class T>
+optics::Profile<T> profileOf(const optics::Material& m, const KnobValues& knobs) {
+  return optics::Profile<T>::make(optics::profileModelNamed(knobs.text("profile")),
+                                  optics::Rgb<T>(m.sigmaA), optics::Rgb<T>(m.sigmaSPrime),
+                                  T(m.eta));
+}
 }  // namespace detail
 
 /// L(x_o, w_o) = Ft(eta, w_o) B(x_o) / pi (Chang et al. 2008 Eq. 2; Jensen et al.
@@ -113,7 +138,8 @@ inline void completeRadiance(FrameResult& frame, const ShadeRequest& request, do
   if (!frame.radiance.empty() || frame.radiosity.empty()) return;
   frame.radiance.resize(frame.radiosity.size());
   for (std::size_t i = 0; i < frame.radiosity.size(); ++i)
-    frame.radiance[i] = exitRadiance(frame.radiosity[i], request.points[i].cosOut, eta);
+    frame.radiance[i] =
+        exitRadiance(frame.radiosity[i], request.points[i].cosOut, eta) * frame.exitScale;
 }
 
 /// B at every request point from a radiosity evaluator, in parallel, with progress.

@@ -55,7 +55,8 @@ inline std::vector<KnobSpec> evaluationKnobs() {
               "eval", {"pixel", "vertex"},
               "where Eq. 11 is summed: pixel (every shaded point) or vertex (interpolated B)"),
           KnobSpec::integer("env-strata", 16, 1, 256,
-                            "environment light: strata x strata directions per irradiance texel")};
+                            "environment light: strata x strata directions per irradiance texel"),
+          profileKnob()};
 }
 
 template <class... Lists>
@@ -175,19 +176,23 @@ class Tsis final : public Prepared {
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
     atlas::ImportanceSamples samples = drawSamples(mAtlas, scene, mKnobs, stats);
-    const auto& m = scene.medium.material;
-    const auto dipole = optics::Dipole<float>::make(
-        optics::Rgb<float>(m.sigmaA), optics::Rgb<float>(m.sigmaSPrime), float(m.eta));
+    const auto profile = profileOf<float>(scene.medium.material, mKnobs);
     std::optional<atlas::TsisEvaluator> eval;
-    if (mKnobs.pick<bool>("rd", {{"table", false}, {"exact", true}})) {
-      eval.emplace(std::move(samples), dipole);
+    const bool exact = mKnobs.pick<bool>("rd", {{"table", false}, {"exact", true}});
+    if (exact && profile.isPolePair()) {
+      eval.emplace(std::move(samples), profile);
     } else {
-      const optics::RdTable<float> table(dipole, float(scene.mesh.bounds().diagonal()));
+      if (exact)
+        stats.warnings.push_back("rd=exact: profile " + mKnobs.text("profile") +
+                                 " has no closed-form kernel; its table is summed");
+      const optics::RadialTable<float> table([&](float r) { return profile.rd(r); },
+                                             float(scene.mesh.bounds().diagonal()));
       stats.figures["rd_table_nodes"] = double(table.size());
-      eval.emplace(std::move(samples), table, float(m.eta));
+      eval.emplace(std::move(samples), table, profile.eta);
     }
     FrameResult out;
     out.radiosity = evaluate(*eval, scene, request, mKnobs, stats);
+    out.exitScale = double(profile.exitScale);
     return out;
   }
 
@@ -202,10 +207,10 @@ class Hybrid final : public Prepared {
       : mKnobs(knobs), mAtlas(buildAtlas(scene, knobs, stats)) {}
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
-    const auto dipole = dipoleOf(scene.medium.material);
+    const auto profile = profileOf<double>(scene.medium.material, mKnobs);
     const double diag = scene.mesh.bounds().diagonal();
-    const double rp = atlas::hybridRp(dipole, mKnobs.real("c"));
-    const atlas::HybridProfiles profiles(dipole, rp, diag, mKnobs.real("K"));
+    const double rp = atlas::hybridRp(profile, mKnobs.real("c"));
+    const atlas::HybridProfiles profiles(profile, rp, diag, mKnobs.real("K"));
     stats.figures["rp_mm"] = rp;
     auto ring = ringFilter(profiles.local, mKnobs, diag, stats);
     const float eta = float(scene.medium.material.eta);
@@ -215,6 +220,7 @@ class Hybrid final : public Prepared {
                                       eta);
     FrameResult out;
     out.radiosity = evaluate(atlas::HybridEvaluator(local, global), scene, request, mKnobs, stats);
+    out.exitScale = profile.exitScale;
     return out;
   }
 
@@ -228,10 +234,10 @@ class Tsm final : public Prepared {
   explicit Tsm(const KnobValues& knobs) : mKnobs(knobs) {}
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
-    const auto dipole = dipoleOf(scene.medium.material);
+    const auto rd = profileOf<double>(scene.medium.material, mKnobs);
     const double diag = scene.mesh.bounds().diagonal();
     const optics::RadialTable<float> profile(
-        [&](float r) { return optics::Rgb<float>(dipole.rd(double(r))); }, float(diag));
+        [&](float r) { return optics::Rgb<float>(rd.rd(double(r))); }, float(diag));
     auto ring = ringFilter(profile, mKnobs, diag, stats);
     stats.samples = stats.figures["local_filter_samples"];
     stats.sampleUnit = "ring filter samples";
@@ -239,6 +245,7 @@ class Tsm final : public Prepared {
                                           profile, float(scene.medium.material.eta));
     FrameResult out;
     out.radiosity = evaluate(local, scene, request, mKnobs, stats);
+    out.exitScale = rd.exitScale;
     return out;
   }
 

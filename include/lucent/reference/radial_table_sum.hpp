@@ -1,8 +1,9 @@
 #pragma once
-/// @file radial_sum.hpp
+/// @file radial_table_sum.hpp
 /// @brief Stage 3 of Chang et al. 2008 (Sec. 3): B(x_o) = sum_i w_i f(|x_i - x_o|) over
-/// the importance samples, f = Rd or a hybrid-weighted profile, looked up in a radial table exactly as
-/// the GPU's 1-D texture does (u = sqrt(r / rMax), linear). Float, vectorised, cloned for AVX2 like the
+/// the importance samples, f = Rd or a hybrid-weighted profile, looked up in a radial table exactly
+/// as the GPU's 1-D texture does (u = sqrt(r / rMax), linear); also the truth's sum for the
+/// profiles without a closed-form kernel (profile.hpp). Float, vectorised, cloned for AVX2 like the
 /// truth's kernel; blocks of 1024 terms are added in double.
 #include <algorithm>
 #include <cmath>
@@ -10,10 +11,10 @@
 #include <vector>
 
 #include "../optics/dipole_lut.hpp"
-#include "../reference/rd_sum_kernel.hpp"
 #include "../util/simd.hpp"
+#include "rd_sum_kernel.hpp"
 
-namespace lucent::atlas {
+namespace lucent::reference {
 
 /// A radial table split into one float array per channel (gather-friendly).
 struct PlanarRadialTable {
@@ -29,10 +30,12 @@ struct PlanarRadialTable {
   std::size_t size() const { return channel[0].size(); }
 };
 
-LUCENT_VECTOR_CLONES inline void radialTableSum(const reference::RdKernelSamples& s, const PlanarRadialTable& table,
-                                                float ox, float oy, float oz, double out[3]) {
+LUCENT_VECTOR_CLONES inline void radialTableSum(const RdKernelSamples& s,
+                                                const PlanarRadialTable& table, float ox, float oy,
+                                                float oz, double out[3]) {
   const float *x = s.x, *y = s.y, *z = s.z, *w0 = s.w0, *w1 = s.w1, *w2 = s.w2;
-  const float *t0 = table.channel[0].data(), *t1 = table.channel[1].data(), *t2 = table.channel[2].data();
+  const float *t0 = table.channel[0].data(), *t1 = table.channel[1].data(),
+              *t2 = table.channel[2].data();
   const int last = int(table.size()) - 1;
   const float scale = float(last) / std::sqrt(table.rMax);
   const float limit = float(last);
@@ -44,8 +47,9 @@ LUCENT_VECTOR_CLONES inline void radialTableSum(const reference::RdKernelSamples
 #pragma omp simd reduction(+ : s0, s1, s2)
     for (std::size_t i = begin; i < end; ++i) {
       const float dx = x[i] - ox, dy = y[i] - oy, dz = z[i] - oz;
-      const float u = std::sqrt(std::sqrt(dx * dx + dy * dy + dz * dz)) * scale;  // sqrt(r / rMax) * last
-      const float inside = u < limit ? 1.0f : 0.0f;                               // 0 beyond rMax
+      const float u =
+          std::sqrt(std::sqrt(dx * dx + dy * dy + dz * dz)) * scale;  // sqrt(r / rMax) * last
+      const float inside = u < limit ? 1.0f : 0.0f;                   // 0 beyond rMax
       const float uc = std::min(u, limit);
       const int k = std::min(int(uc), last - 1);
       const float f = uc - float(k);
@@ -58,4 +62,4 @@ LUCENT_VECTOR_CLONES inline void radialTableSum(const reference::RdKernelSamples
   out[0] = total0, out[1] = total1, out[2] = total2;
 }
 
-}  // namespace lucent::atlas
+}  // namespace lucent::reference
