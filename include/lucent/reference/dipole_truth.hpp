@@ -119,15 +119,9 @@ class DipoleTruth {
   glm::dvec3 pointSum(const glm::dvec3& xo) const {
     if constexpr (std::is_same_v<T, float>)
       return radiosityFloatKernel(xo);  // vectorised, same sum
-    const T ox = T(xo.x), oy = T(xo.y), oz = T(xo.z);
-    double sum[3] = {0, 0, 0};
-    const std::size_t n = mX.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const T dx = mX[i] - ox, dy = mY[i] - oy, dz = mZ[i] - oz;
-      const T r = std::sqrt(dx * dx + dy * dy + dz * dz);
-      for (int c = 0; c < 3; ++c) sum[c] += double(mW[c][i] * mProfile.channel[c].rd(r));
-    }
-    return {sum[0], sum[1], sum[2]};
+    // The dipoles' channels directly: the profile's per-call dispatch costs 3x here.
+    if (mProfile.isPolePair()) return scalarSum(xo, mProfile.poles().channel);
+    return scalarSum(xo, mProfile.channel);
   }
 
   /// L(xo, wo) = (1/pi) Ft(eta, wo) B(xo) (Eq. 2); cosOut = n.wo at xo.
@@ -162,6 +156,19 @@ class DipoleTruth {
     else
       rdSumFloat(samples, mKernel, float(xo.x), float(xo.y), float(xo.z), out);
     return {out[0], out[1], out[2]};
+  }
+
+  template <class Channel>
+  glm::dvec3 scalarSum(const glm::dvec3& xo, const Channel (&channel)[3]) const {
+    const T ox = T(xo.x), oy = T(xo.y), oz = T(xo.z);
+    double sum[3] = {0, 0, 0};
+    const std::size_t n = mX.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const T dx = mX[i] - ox, dy = mY[i] - oy, dz = mZ[i] - oz;
+      const T r = std::sqrt(dx * dx + dy * dy + dz * dz);
+      for (int c = 0; c < 3; ++c) sum[c] += double(mW[c][i] * channel[c].rd(r));
+    }
+    return {sum[0], sum[1], sum[2]};
   }
 
   /// The profile as a radial table to the largest distance between two samples (the bounding box's

@@ -59,6 +59,12 @@ class JensenBuhlerTree {
   }
 
   glm::dvec3 treeSum(const glm::dvec3& xo) const {
+    // The dipoles' closed form directly: the profile's per-call dispatch would cost 3x per Rd.
+    return mDipole.isPolePair() ? treeSumWith(xo, mPoles) : treeSumWith(xo, mDipole);
+  }
+
+  template <class Rd>
+  glm::dvec3 treeSumWith(const glm::dvec3& xo, const Rd& profile) const {
     glm::dvec3 sum(0);
     if (mNodes.empty()) return sum;
     std::vector<std::uint32_t> stack{0};
@@ -71,11 +77,11 @@ class JensenBuhlerTree {
       const bool inside =
           glm::all(glm::greaterThanEqual(xo, node.lo)) && glm::all(glm::lessThanEqual(xo, node.hi));
       if (!inside && node.area < mEpsilon * dist2) {
-        sum += node.power * glm::dvec3(mDipole.rd(T(std::sqrt(dist2))));
+        sum += node.power * glm::dvec3(profile.rd(T(std::sqrt(dist2))));
       } else if (node.firstChild == 0) {
         for (std::uint32_t k = node.begin; k < node.end; ++k) {
           const std::uint32_t i = mOrder[k];
-          sum += mPower[i] * glm::dvec3(mDipole.rd(T(glm::length(xo - mPosition[i]))));
+          sum += mPower[i] * glm::dvec3(profile.rd(T(glm::length(xo - mPosition[i]))));
         }
       } else {
         for (int c = 0; c < 8; ++c)
@@ -142,7 +148,8 @@ class JensenBuhlerTree {
   }
 
   optics::Profile<T> mDipole;
-  const NearField* mNear;  ///< the truth's, which outlives the tree
+  optics::Dipole<T> mPoles = mDipole.poles();  ///< the same, when it is a dipole
+  const NearField* mNear;                      ///< the truth's, which outlives the tree
   double mEpsilon;
   std::size_t mLeafSize;
   std::vector<glm::dvec3> mPosition, mPower;
