@@ -45,7 +45,7 @@ namespace detail {
 /// Rd of one channel at squared distance r2 (Table 1): real source at depth zr, virtual at height
 /// zv. A plain function of values (a capturing lambda here stops GCC from vectorising the loop).
 template <bool kFluence>
-inline float rdChannel(float r2, const RdKernelConstants& k, int c) {
+LUCENT_ALWAYS_INLINE float rdChannel(float r2, const RdKernelConstants& k, int c) {
   const float zr = k.zr[c], zv = k.zv[c], st = k.sigmaTr[c];
   const float dr = std::sqrt(r2 + k.zr2[c]), dv = std::sqrt(r2 + k.zv2[c]);
   const float er = optics::expNonPositive(-st * dr), ev = optics::expNonPositive(-st * dv);
@@ -65,12 +65,8 @@ struct RdKernelSamples {
 namespace detail {
 // Always inlined, so that it is compiled for each of rdSumFloat's target clones.
 template <bool kFluence>
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-inline void
-rdSumFloatLoop(const RdKernelSamples& s, const RdKernelConstants& k, float ox, float oy, float oz,
-               double out[3]) {
+LUCENT_ALWAYS_INLINE void rdSumFloatLoop(const RdKernelSamples& s, const RdKernelConstants& k,
+                                         float ox, float oy, float oz, double out[3]) {
   // Locals, not struct members, inside the loop: GCC will not vectorise loads through s.x etc.
   // because a float store could (as far as it knows) change the pointers.
   const float *x = s.x, *y = s.y, *z = s.z, *w0 = s.w0, *w1 = s.w1, *w2 = s.w2;

@@ -10,3 +10,13 @@
 #else
 #define LUCENT_VECTOR_CLONES
 #endif
+
+/// LUCENT_ALWAYS_INLINE: a kernel's inner functions, inlined into each clone whatever the inliner's
+/// budget in the including file says: a call left in the loop stops its vectorisation (measured:
+/// the Rd sum went from 4.4 to 30 ns per evaluation when an unrelated header change tipped the
+/// budget).
+#if defined(__GNUC__)
+#define LUCENT_ALWAYS_INLINE __attribute__((always_inline)) inline
+#else
+#define LUCENT_ALWAYS_INLINE inline
+#endif
