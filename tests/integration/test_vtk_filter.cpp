@@ -58,28 +58,38 @@ double betterDipoleTotal(double sigmaA, double sigmaSPrime, double eta) {
   const double fluence = (1 - 2 * c1) / (4 * d) * (std::exp(-str * zr) - std::exp(-str * zv)) / str;
   return alpha / 2 * (flux + fluence);
 }
+
+// skin1 (Jensen et al. 2001, Fig. 5), typed here.
+constexpr double kSkinSigmaA[3] = {0.032, 0.17, 0.48}, kSkinSigmaSPrime[3] = {0.74, 0.88, 1.01},
+                 kSkinEta = 1.3;
+
+/// A 60 x 60 x 30 mm box of skin1, lit from +z with irradiance 2, through the reference: far from
+/// the edges, the top face is a half-space, where B = Ft(0) E R_total (R integrated over the
+/// plane).
+void setUpLitSkinSlab(vtkTessellatedBoxSource* box, vtkLucentFilter* filter) {
+  box->SetBounds(-30, 30, -30, 30, -15, 15);
+  box->SetLevel(24);
+  box->QuadsOn();
+  filter->SetInputConnection(box->GetOutputPort());
+  filter->SetMaterial("skin1");
+  filter->SetLightDirection(0, 0, 1);
+  filter->SetLightIrradiance(2.0);
+  filter->SetKnob("reference.fraction", "1");
+}
 }  // namespace
 
 TEST_CASE(
     "vtkLucentFilter: the profile property picks the better dipole, whose slab face matches its "
     "total") {
   vtkNew<vtkTessellatedBoxSource> box;
-  box->SetBounds(-30, 30, -30, 30, -15, 15);
-  box->SetLevel(24);
-  box->QuadsOn();
   vtkNew<vtkLucentFilter> filter;
-  filter->SetInputConnection(box->GetOutputPort());
-  filter->SetMaterial("skin1");
-  filter->SetLightDirection(0, 0, 1);
-  filter->SetLightIrradiance(2.0);
-  filter->SetKnob("reference.fraction", "1");
+  setUpLitSkinSlab(box, filter);
   filter->SetKnob("reference.profile", "better-dipole");
   filter->Update();
   vtkPolyData* out = filter->GetOutput();
   vtkDataArray* b = out->GetPointData()->GetArray("Radiosity");
   REQUIRE(b != nullptr);
-  const double sigmaA[3] = {0.032, 0.17, 0.48}, sigmaSPrime[3] = {0.74, 0.88, 1.01}, eta = 1.3;
-  const double ft0 = 1 - std::pow((eta - 1) / (eta + 1), 2);
+  const double ft0 = 1 - std::pow((kSkinEta - 1) / (kSkinEta + 1), 2);
   int centre = 0;
   for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i) {
     double p[3];
@@ -87,9 +97,9 @@ TEST_CASE(
     if (std::abs(p[2] - 15) > 1e-9 || std::hypot(p[0], p[1]) >= 6) continue;
     ++centre;
     for (int c = 0; c < 3; ++c) {
-      const double better = betterDipoleTotal(sigmaA[c], sigmaSPrime[c], eta);
+      const double better = betterDipoleTotal(kSkinSigmaA[c], kSkinSigmaSPrime[c], kSkinEta);
       INFO("channel " << c << ": better dipole total " << better << ", classic "
-                      << totalDiffuseReflectance(sigmaA[c], sigmaSPrime[c], eta));
+                      << totalDiffuseReflectance(kSkinSigmaA[c], kSkinSigmaSPrime[c], kSkinEta));
       CHECK(b->GetComponent(i, c) == doctest::Approx(2 * ft0 * better).epsilon(0.03));
     }
   }
@@ -99,18 +109,9 @@ TEST_CASE(
 TEST_CASE(
     "vtkLucentFilter: a lit slab's face matches the dipole's total diffuse reflectance, shadowed "
     "side dark, progress") {
-  // A 60 x 60 x 30 mm box of skin, lit from +z with irradiance 2: far from the edges, the top face
-  // is a half-space, where B = Ft(0) E Rd_total (Rd integrated over the plane).
   vtkNew<vtkTessellatedBoxSource> box;
-  box->SetBounds(-30, 30, -30, 30, -15, 15);
-  box->SetLevel(24);
-  box->QuadsOn();
   vtkNew<vtkLucentFilter> filter;
-  filter->SetInputConnection(box->GetOutputPort());
-  filter->SetMaterial("skin1");
-  filter->SetLightDirection(0, 0, 1);
-  filter->SetLightIrradiance(2.0);
-  filter->SetKnob("reference.fraction", "1");
+  setUpLitSkinSlab(box, filter);
   int progressEvents = 0;
   vtkNew<vtkCallbackCommand> onProgress;
   onProgress->SetClientData(&progressEvents);
@@ -127,8 +128,7 @@ TEST_CASE(
   CHECK(progressEvents >= 10);
   CHECK(filter->GetSampleCount() > 1000);
 
-  const double sigmaA[3] = {0.032, 0.17, 0.48}, sigmaSPrime[3] = {0.74, 0.88, 1.01}, eta = 1.3;
-  const double ft0 = 1 - std::pow((eta - 1) / (eta + 1), 2);
+  const double ft0 = 1 - std::pow((kSkinEta - 1) / (kSkinEta + 1), 2);
   int centre = 0, bottom = 0;
   double topMean[3] = {0, 0, 0}, bottomMax[3] = {0, 0, 0};
   for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i) {
@@ -140,7 +140,8 @@ TEST_CASE(
       for (int c = 0; c < 3; ++c) {
         INFO("channel " << c << " at " << p[0] << ", " << p[1]);
         CHECK(b->GetComponent(i, c) ==
-              doctest::Approx(2 * ft0 * totalDiffuseReflectance(sigmaA[c], sigmaSPrime[c], eta))
+              doctest::Approx(
+                  2 * ft0 * totalDiffuseReflectance(kSkinSigmaA[c], kSkinSigmaSPrime[c], kSkinEta))
                   .epsilon(0.03));
         topMean[c] += b->GetComponent(i, c);
       }

@@ -78,32 +78,32 @@ struct ProfileChannel {
   bool isPolePair() const {
     return model == ProfileModel::Dipole || model == ProfileModel::BetterDipole;
   }
+  /// f applied to the model's own channel: the one place the model is dispatched on.
+  template <class F>
+  auto visit(const F& f) const {
+    if (isPolePair()) return f(poles);
+    return model == ProfileModel::BeamDiffusion ? f(beam) : f(burley);
+  }
   bool scatters() const {
-    if (isPolePair()) return poles.scatters();
-    return model == ProfileModel::BeamDiffusion ? beam.scatters() : burley.scatters();
+    return visit([](const auto& c) { return c.scatters(); });
   }
   T rd(T r) const {
-    if (isPolePair()) return poles.rd(r);
-    return model == ProfileModel::BeamDiffusion ? beam.rd(r) : burley.rd(r);
+    return visit([r](const auto& c) { return c.rd(r); });
   }
   T cumulative(T rho) const {
-    if (isPolePair()) return poles.cumulative(rho);
-    return model == ProfileModel::BeamDiffusion ? beam.cumulative(rho) : burley.cumulative(rho);
+    return visit([rho](const auto& c) { return c.cumulative(rho); });
   }
   T total() const {
-    if (isPolePair()) return poles.total();
-    return model == ProfileModel::BeamDiffusion ? beam.total() : burley.total();
+    return visit([](const auto& c) { return c.total(); });
   }
   T meanFreePath() const { return meanFreePathMm; }
   /// The length R falls off over (what a point sum must resolve).
   T width() const {
-    if (isPolePair()) return poles.width();
-    return model == ProfileModel::BeamDiffusion ? beam.width() : burley.width();
+    return visit([](const auto& c) { return c.width(); });
   }
   /// A distance beyond the peak of R(r) 2 pi r.
   T reach() const {
-    if (isPolePair()) return poles.reach();
-    return model == ProfileModel::BeamDiffusion ? beam.reach() : burley.reach();
+    return visit([](const auto& c) { return c.reach(); });
   }
   /// The radius within which `fraction` of the total leaves (the inverse of the radial CDF), by
   /// bisection on the exact cumulative; 0 for a channel that does not scatter.

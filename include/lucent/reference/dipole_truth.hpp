@@ -120,7 +120,7 @@ class DipoleTruth {
     if constexpr (std::is_same_v<T, float>)
       return radiosityFloatKernel(xo);  // vectorised, same sum
     // The dipoles' channels directly: the profile's per-call dispatch costs 3x here.
-    if (mProfile.isPolePair()) return scalarSum(xo, mProfile.poles().channel);
+    if (mProfile.isPolePair()) return scalarSum(xo, mPoles.channel);
     return scalarSum(xo, mProfile.channel);
   }
 
@@ -183,6 +183,7 @@ class DipoleTruth {
   }
 
   optics::Profile<T> mProfile;
+  optics::Dipole<T> mPoles = mProfile.poles();  ///< the same, when it is a dipole
   RdKernelConstants mKernel{};
   std::shared_ptr<const PlanarRadialTable> mTable;
   std::vector<T> mX, mY, mZ, mW[3];
