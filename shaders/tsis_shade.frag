@@ -2,7 +2,9 @@
 //VTK::Output::Dec
 //LUCENT::Optics
 // Stage 3, per pixel (Chang et al. 2008 Eq. 10-11):
-//   L(x_o, w_o) = Ft(eta, w_o) / pi * sum_i w_i Rd(|x_i - x_o|).
+//   L(x_o, w_o) = exitScale Ft(eta, w_o) / pi * sum_i w_i Rd(|x_i - x_o|),
+// Rd from the profile's radial table (the paper's 1-D texture), or in closed form for a pole pair
+// with rd=exact. exitScale is Profile::exitScale (1 / (1 - 2 C1) for the models after the dipole).
 in vec3 positionVSOutput;
 in vec3 normalVSOutput;
 uniform sampler2D samplePosition;  // world, w = 1 for a drawn sample
@@ -12,7 +14,17 @@ uniform int samplesPerRow;
 uniform float mmPerUnit;
 uniform vec3 cameraPosition;
 uniform float eta;
+uniform float exitScale;
+uniform int closedForm;            // 1: the pole pair below; 0: the table
 uniform LucentDipole dipole;
+uniform sampler2D profileTable;
+uniform LucentRadialTable profile;
+
+vec3 profileRd(float r)
+{
+  return closedForm != 0 ? lucentDipoleRd(dipole, r) : lucentRadialTableRd(profileTable, profile, r);
+}
+
 void main()
 {
   vec3 sum = vec3(0.0);
@@ -21,11 +33,11 @@ void main()
     ivec2 c = ivec2(i % samplesPerRow, i / samplesPerRow);
     vec4 xi = texelFetch(samplePosition, c, 0);
     float r = distance(xi.xyz, positionVSOutput) * mmPerUnit;
-    sum += texelFetch(sampleWeight, c, 0).rgb * lucentDipoleRd(dipole, r);
+    sum += texelFetch(sampleWeight, c, 0).rgb * profileRd(r);
   }
   vec3 n = normalize(normalVSOutput);
   float cosOut = dot(n, normalize(cameraPosition - positionVSOutput));
-  vec3 radiance = sum * (lucentFresnelTransmittance(abs(cosOut), eta) / kPi);
+  vec3 radiance = sum * (exitScale * lucentFresnelTransmittance(abs(cosOut), eta) / kPi);
   gl_FragData[0] = vec4(radiance, 1.0);
   gl_FragData[1] = vec4(positionVSOutput, 1.0);
   gl_FragData[2] = vec4(n, cosOut);

@@ -18,8 +18,8 @@
 
 namespace lucent_test {
 
-/// Draws a full-screen quad with one fragment shader into a width x height RGBA32F target and reads it
-/// back. The shader sees `in vec2 texCoord` (texel centres) and writes gl_FragData[0].
+/// Draws a full-screen quad with one fragment shader into a width x height RGBA32F target and reads
+/// it back. The shader sees `in vec2 texCoord` (texel centres) and writes gl_FragData[0].
 class QuadProbe {
  public:
   QuadProbe(int width, int height) : mWidth(width), mHeight(height) {
@@ -43,11 +43,13 @@ class QuadProbe {
   bool program(const std::string& fragmentShader) {
     mGl->MakeCurrent();
     delete mQuad;
-    mQuad = new vtkOpenGLQuadHelper(mGl, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
-                                    fragmentShader.c_str(), "");
+    mQuad = new vtkOpenGLQuadHelper(
+        mGl, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
+        fragmentShader.c_str(), "");
     return mQuad->Program && mQuad->Program->GetCompiled();
   }
   vtkShaderProgram* shader() { return mQuad->Program; }
+  vtkOpenGLRenderWindow* window() { return mGl; }
 
   /// Draws and returns width * height * 4 floats.
   std::vector<float> draw() {

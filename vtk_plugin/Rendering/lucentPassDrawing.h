@@ -4,8 +4,11 @@
 #ifndef lucentPassDrawing_h
 #define lucentPassDrawing_h
 
+#include <algorithm>
+#include <cstddef>
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 #include <vtkOpenGLFramebufferObject.h>
 #include <vtkOpenGLRenderWindow.h>
@@ -52,6 +55,18 @@ inline vtkSmartPointer<vtkTextureObject> newDepthTexture(vtkOpenGLRenderWindow* 
   auto t = newNearestTexture(window);
   t->AllocateDepth(unsigned(width), unsigned(height), vtkTextureObject::Float32);
   return t;
+}
+
+/// Upper bound on texels per row of the 1-D tables laid out in 2-D (the GL limit may be lower).
+constexpr int kMaxRowTexels = 16384;
+
+/// A table of `count` RGBA values as rows of `rowTexels` (the last padded), or one texel of zeros.
+inline bool uploadRows(vtkTextureObject* texture, std::vector<float> rgba, int rowTexels) {
+  const std::size_t count = rgba.size() / 4;
+  const std::size_t width = std::max<std::size_t>(1, std::min<std::size_t>(count, rowTexels));
+  const std::size_t rows = std::max<std::size_t>(1, (count + width - 1) / width);
+  rgba.resize(width * rows * 4, 0.0f);
+  return texture->Create2DFromRaw(unsigned(width), unsigned(rows), 4, VTK_FLOAT, rgba.data());
 }
 
 inline vtkSmartPointer<vtkOpenGLFramebufferObject> newFramebuffer(vtkOpenGLRenderWindow* window) {

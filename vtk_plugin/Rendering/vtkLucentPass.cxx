@@ -30,7 +30,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include <lucent/optics/dipole.hpp>
 #include <lucent/optics/materials.hpp>
 #include <lucent/technique/core_techniques.hpp>
 
@@ -38,6 +37,7 @@
 #include "lucentPolyDataMesh.h"
 #include "lucentSmpFor.h"
 #include "lucent_glsl.h"
+#include "vtkLucentProfile.h"
 #include "vtkLucentSurface.h"
 #include "vtkLucentTauLut.h"
 
@@ -162,7 +162,8 @@ struct vtkLucentPass::Internals {
   vtkOpenGLQuadHelper* compositeQuad = nullptr;
   std::string lightDepthVs, lightDepthFs, atlasVs, atlasFs, shadeVs, shadeFs, tauShadeFs;
   std::map<vtkActor*, vtkSmartPointer<vtkLucentSurface>> surfaces;
-  std::map<const vtkLucentSurface*, vtkSmartPointer<vtkLucentTauLut>> tauLuts;  ///< taulut's twin
+  std::map<const vtkLucentSurface*, vtkSmartPointer<vtkLucentTauLut>> tauLuts;    ///< taulut's twin
+  std::map<const vtkLucentSurface*, vtkSmartPointer<vtkLucentProfile>> profiles;  ///< tsis's Rd
   /// Per surface, the build, material and knobs its range was last checked for: the check copies
   /// the mesh, so it runs when one of them changes, not every frame.
   std::map<const vtkLucentSurface*, std::string> rangeChecked;
@@ -182,7 +183,7 @@ struct vtkLucentPass::Internals {
 struct vtkLucentPass::FrameSetup {
   glm::dvec3 towardLight{0, 0, 1};
   float irradiance[3] = {1, 1, 1};
-  float eta = 1.3f, sigmaTr[3] = {}, zr[3] = {}, zv[3] = {}, alphaPrime[3] = {};
+  lucent::optics::Material material;
   int atlasSize = 0, topLevel = 0, shadowSize = 0, samplesPerRow = 0;
   vtkMatrix4x4* worldToClip = nullptr;
   float camera[3] = {};
@@ -408,15 +409,7 @@ bool vtkLucentPass::SetUpFrame(vtkRenderer* renderer, FrameSetup& frame) {
     return false;
   }
   if (!this->ResolveLight(renderer, frame)) return false;
-  const auto dipole =
-      lucent::optics::Dipole<double>::make(material->sigmaA, material->sigmaSPrime, material->eta);
-  frame.eta = float(material->eta);
-  for (int c = 0; c < 3; ++c) {
-    frame.sigmaTr[c] = float(dipole.channel[c].sigmaTr);
-    frame.zr[c] = float(dipole.channel[c].zr);
-    frame.zv[c] = float(dipole.channel[c].zv);
-    frame.alphaPrime[c] = float(dipole.channel[c].alphaPrime);
-  }
+  frame.material = *material;
 
   frame.atlasSize = powerOfTwoAtLeast(this->AtlasResolution);
   frame.topLevel = int(std::lround(std::log2(double(frame.atlasSize))));
@@ -490,7 +483,7 @@ bool vtkLucentPass::RenderAtlasIrradiance(vtkOpenGLRenderWindow* window, vtkLuce
                              float(frame.towardLight.z)};
     program->SetUniform3f("towardLight", toward);
     program->SetUniform3f("lightIrradiance", frame.irradiance);
-    program->SetUniformf("eta", frame.eta);
+    program->SetUniformf("eta", float(frame.material.eta));
     program->SetUniformf("shadowBias", 1.0f / float(frame.shadowSize));
     surface->Draw(program, vtkLucentSurface::Atlas);
     I.lightDepth->Deactivate();
@@ -559,19 +552,40 @@ bool vtkLucentPass::ShadeSurface(vtkOpenGLRenderWindow* window, vtkLucentSurface
     program->SetUniformi("samplesPerRow", frame.samplesPerRow);
     program->SetUniformf("mmPerUnit", float(surface->GetMillimetresPerUnit()));
     program->SetUniform3f("cameraPosition", frame.camera);
-    program->SetUniformf("eta", frame.eta);
-    program->SetUniform3f("dipole.sigmaTr", frame.sigmaTr);
-    program->SetUniform3f("dipole.zr", frame.zr);
-    program->SetUniform3f("dipole.zv", frame.zv);
-    program->SetUniform3f("dipole.alphaPrime", frame.alphaPrime);
+    program->SetUniformf("eta", float(frame.material.eta));
+    vtkLucentProfile* profile = I.profiles.at(surface);
+    profile->Activate(program);
     program->SetUniformMatrix("worldToClip", frame.worldToClip);
     surface->Draw(program, vtkLucentSurface::Shade);
+    profile->Deactivate();
     I.sampleWeight->Deactivate();
     I.samplePosition->Deactivate();
   }
   endDrawing(I.translucentFbo);
   if (!program) this->ReportError("vtkLucentPass: the shading shader did not compile");
   return program != nullptr;
+}
+
+bool vtkLucentPass::UpdateProfile(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
+                                  const lt::KnobValues& knobs, const FrameSetup& frame) {
+  auto& profile = this->Impl->profiles[surface];
+  if (!profile) profile = vtkSmartPointer<vtkLucentProfile>::New();
+  std::string warning, error;
+  try {
+    if (!profile->Update(window, frame.material, knobs,
+                         surface->GetMillimetreMesh().bounds().diagonal(), warning, error)) {
+      this->ReportError(error);
+      return false;
+    }
+  } catch (const std::exception& e) {  // an object too small or too large for the table
+    this->ReportError(std::string("vtkLucentPass: the profile's table: ") + e.what());
+    return false;
+  }
+  if (!warning.empty() && warning != this->LastRangeWarning) {
+    this->LastRangeWarning = warning;
+    vtkWarningMacro(<< "vtkLucentPass (tsis's GPU twin): " << warning);
+  }
+  return true;
 }
 
 bool vtkLucentPass::ShadeTauLut(vtkOpenGLRenderWindow* window, const lt::Technique& taulut,
@@ -675,7 +689,8 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
         return false;
       continue;
     }
-    if (!this->RenderLightDepth(window, surface, frame) ||
+    if (!this->UpdateProfile(window, surface, knobs, frame) ||
+        !this->RenderLightDepth(window, surface, frame) ||
         !this->RenderAtlasIrradiance(window, surface, frame) ||
         !this->DrawImportanceSamples(window, frame) ||
         !this->ShadeSurface(window, surface, frame, width, height))
@@ -689,6 +704,10 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
       if (auto lut = I.tauLuts.find(surface.Get()); lut != I.tauLuts.end()) {
         lut->second->ReleaseGraphicsResources(window);
         I.tauLuts.erase(lut);
+      }
+      if (auto p = I.profiles.find(surface.Get()); p != I.profiles.end()) {
+        p->second->ReleaseGraphicsResources(window);
+        I.profiles.erase(p);
       }
     }
   I.surfaces = std::move(seen);
@@ -805,6 +824,8 @@ void vtkLucentPass::ReleaseGraphicsResources(vtkWindow* w) {
   I.surfaces.clear();
   for (auto& entry : I.tauLuts) entry.second->ReleaseGraphicsResources(w);
   I.tauLuts.clear();
+  for (auto& entry : I.profiles) entry.second->ReleaseGraphicsResources(w);
+  I.profiles.clear();
   I.rangeChecked.clear();
   for (auto* fbo : {I.sceneFbo.Get(), I.translucentFbo.Get(), I.lightFbo.Get(), I.atlasFbo.Get(),
                     I.samplesFbo.Get()})

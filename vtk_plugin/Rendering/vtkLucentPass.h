@@ -14,7 +14,9 @@
 ///  1. irradiance E' = E A_S / A_T rendered into the object's texture atlas, with the position map
 ///  (Eq. 4-7);
 ///  2. N texels drawn in proportion to E' by descending the atlas's mip chain (Sec. 3.2, Fig. 2b);
-///  3. every pixel sums Rd(|x_i - x_o|) w_i over the N samples, L = Ft B / pi (Eq. 10-11);
+///  3. every pixel sums R(|x_i - x_o|) w_i over the N samples, L = Ft B / pi (Eq. 10-11), R the
+///  profile of tsis's `profile` knob: its radial table, or a dipole in closed form with rd=exact
+///  (vtkLucentProfile);
 ///  4. the translucent radiance replaces the delegate's shading where the object is visible.
 /// The light is directional: LightDirection, or else the renderer's first switched-on light (from
 /// its position towards its focal point). GLSL: shaders/ (constants generated from
@@ -155,7 +157,7 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   struct Internals;
   Internals* Impl;
 
-  struct FrameSetup;  // the light, the material's dipole, target sizes and the camera of one frame
+  struct FrameSetup;  // the light, the material, target sizes and the camera of one frame
 
   void InitializeGraphicsResources(vtkOpenGLRenderWindow* window, int width, int height);
   void RenderDelegateWithDepth(const vtkRenderState* s, int width, int height);
@@ -183,6 +185,9 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
                    const lucent::technique::KnobValues& knobs, vtkLucentSurface* surface,
                    const std::vector<vtkActor*>& inner, const FrameSetup& frame, int width,
                    int height);
+  /// tsis's profile and rd knobs for this actor's stage 3 (vtkLucentProfile).
+  bool UpdateProfile(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
+                     const lucent::technique::KnobValues& knobs, const FrameSetup& frame);
   /// The technique's knobs as its twin takes them (the given ones clamped to the twin's range).
   lucent::technique::KnobValues TwinValues(const lucent::technique::Technique& t) const;
   void RefreshTsisKnobs();

@@ -23,8 +23,6 @@ namespace lt = lucent::technique;
 namespace lv = lucent::voxel;
 using namespace lucent::vtkpass;
 
-/// Upper bound on texels per row of the 1-D tables laid out in 2-D (the GL limit may be lower).
-constexpr int kMaxRowTexels = 16384;
 /// sigma_t's table: medium indices 0 (none) .. 255.
 constexpr int kMediumSlots = 256;
 
@@ -33,14 +31,6 @@ void set3f(vtkShaderProgram* program, const char* name, const glm::dvec3& v) {
   program->SetUniform3f(name, f);
 }
 
-/// A table of `count` RGBA values as rows of `rowTexels` (the last padded), or one texel of zeros.
-bool upload2D(vtkTextureObject* texture, std::vector<float> rgba, int rowTexels) {
-  const std::size_t count = rgba.size() / 4;
-  const std::size_t width = std::max<std::size_t>(1, std::min<std::size_t>(count, rowTexels));
-  const std::size_t rows = std::max<std::size_t>(1, (count + width - 1) / width);
-  rgba.resize(width * rows * 4, 0.0f);
-  return texture->Create2DFromRaw(unsigned(width), unsigned(rows), 4, VTK_FLOAT, rgba.data());
-}
 }  // namespace
 
 struct vtkLucentTauLut::Textures {
@@ -137,9 +127,9 @@ bool vtkLucentTauLut::Upload(vtkOpenGLRenderWindow* window, std::string& error) 
       cells.insert(cells.end(), {float(cell.x), float(cell.y), float(cell.z), 0.0f});
       points.insert(points.end(), {float(p.x), float(p.y), float(p.z), 0.0f});
     }
-  if (!upload2D(T.surfaceVoxel, centres, this->RowTexels) ||
-      !upload2D(T.clusterCell, cells, this->RowTexels) ||
-      !upload2D(T.clusterPoint, points, this->RowTexels)) {
+  if (!uploadRows(T.surfaceVoxel, centres, this->RowTexels) ||
+      !uploadRows(T.clusterCell, cells, this->RowTexels) ||
+      !uploadRows(T.clusterPoint, points, this->RowTexels)) {
     error = "taulut: the surface voxels could not be uploaded";
     return false;
   }

@@ -16,25 +16,31 @@
 
 namespace lucent::optics {
 
-/// @brief Error bound of a tabulated profile.
-/// Where Rd(r) >= floor * Rd(0): |Rd_lut - Rd| <= relTol * Rd(r). Elsewhere: |Rd_lut - Rd| <= relTol *
-/// floor * Rd(0), i.e. the far tail is bounded in absolute terms (it is below floor of the peak anyway).
+/// @brief Error bound of a tabulated profile, on [r0, rMax] with r0 the table's regularFrom (0 for a
+/// profile finite at r = 0). Where Rd(r) >= floor * Rd(r0): |Rd_lut - Rd| <= relTol * Rd(r).
+/// Elsewhere: |Rd_lut - Rd| <= relTol * floor * Rd(r0), i.e. the far tail is bounded in absolute
+/// terms (it is below floor of the peak anyway).
 template <class T>
 struct RdTableBound {
   T relTol = T(1e-3);
   T floor = T(1e-6);
 };
 
-/// A radial profile f(r) (three channels) tabulated on [0, rMax] with the bound above, taking Rd(0)
-/// as the peak the floor is relative to. Rd itself (RdTable) and the hybrid method's weighted profiles
-/// Rd Wl and Rd Wg share it, so every profile the renderer looks up obeys one stated bound.
+/// A radial profile f(r) (three channels) tabulated on [0, rMax] with the bound above, taking
+/// Rd(regularFrom) as the peak the floor is relative to. Rd itself (RdTable) and the hybrid method's
+/// weighted profiles Rd Wl and Rd Wg share it, so every profile the renderer looks up obeys one
+/// stated bound. A profile singular at r = 0 (Profile::regularFrom) is held constant in a tiny core
+/// by its model; there the bound is not asked for (the kink where the hold ends would take 2^20
+/// nodes to interpolate to 1e-3) and the table lies between the node values.
 template <class T>
 class RadialTable {
  public:
   /// @param profile callable T -> Rgb<T>, finite and >= 0 on [0, rMax]; @param rMax the largest distance
-  /// looked up (mm), e.g. the object's diagonal. Beyond rMax lookups return 0.
+  /// looked up (mm), e.g. the object's diagonal. Beyond rMax lookups return 0. @param regularFrom
+  /// where the bound starts (Profile::regularFrom; 0 for a profile finite at 0).
   template <class Profile>
-  RadialTable(const Profile& profile, T rMax, RdTableBound<T> bound = {}) : mRMax(rMax), mBound(bound) {
+  RadialTable(const Profile& profile, T rMax, RdTableBound<T> bound = {}, T regularFrom = T(0))
+      : mRMax(rMax), mRegularFrom(regularFrom), mBound(bound) {
     if (!(rMax > T(0)) || !std::isfinite(double(rMax)))
       throw std::invalid_argument("RdTable: rMax must be positive and finite");
     for (std::size_t n = 64;; n *= 2) {
@@ -54,6 +60,7 @@ class RadialTable {
 
   std::size_t size() const { return mValues.size(); }
   T rMax() const { return mRMax; }
+  T regularFrom() const { return mRegularFrom; }
   const RdTableBound<T>& bound() const { return mBound; }
   /// True when the node budget ran out before the bound was met (the bound then does not hold).
   bool saturated() const { return mSaturated; }
@@ -77,11 +84,12 @@ class RadialTable {
   template <class Profile>
   bool meetsBound(const Profile& profile) {
     const std::size_t n = mValues.size();
-    const Rgb<T> peak = profile(T(0));
+    const Rgb<T> peak = profile(mRegularFrom);
     for (std::size_t i = 0; i + 1 < n; ++i) {
       // Midpoint in the table's own coordinate u, where linear interpolation errs the most.
       const T s = (T(i) + T(0.5)) / T(n - 1);
       const T r = mRMax * s * s;
+      if (r < mRegularFrom) continue;
       const Rgb<T> exact = profile(r);
       const Rgb<T> approx = (mValues[i] + mValues[i + 1]) * T(0.5);
       for (int c = 0; c < kChannels; ++c) {
@@ -99,6 +107,7 @@ class RadialTable {
   }
 
   T mRMax;
+  T mRegularFrom;
   RdTableBound<T> mBound;
   std::vector<Rgb<T>> mValues;
   bool mSaturated = false;

@@ -177,8 +177,7 @@ class DipoleTruth {
     glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
     for (const auto& p : samples.position) lo = glm::min(lo, p), hi = glm::max(hi, p);
     const float rMax = float(std::max(glm::length(hi - lo), 1e-9) * 1.001);
-    const optics::RadialTable<float> table(
-        [this](float r) { return optics::Rgb<float>(mProfile.rd(T(r))); }, rMax);
+    const auto table = optics::radialTable(mProfile, rMax);
     return std::make_shared<PlanarRadialTable>(table);
   }
 

@@ -185,8 +185,7 @@ class Tsis final : public Prepared {
       if (exact)
         stats.warnings.push_back("rd=exact: profile " + mKnobs.text("profile") +
                                  " has no closed-form kernel; its table is summed");
-      const optics::RadialTable<float> table([&](float r) { return profile.rd(r); },
-                                             float(scene.mesh.bounds().diagonal()));
+      const auto table = optics::radialTable(profile, float(scene.mesh.bounds().diagonal()));
       stats.figures["rd_table_nodes"] = double(table.size());
       eval.emplace(std::move(samples), table, profile.eta);
     }
@@ -236,8 +235,7 @@ class Tsm final : public Prepared {
                     Statistics& stats) override {
     const auto rd = profileOf<double>(scene.medium.material, mKnobs);
     const double diag = scene.mesh.bounds().diagonal();
-    const optics::RadialTable<float> profile(
-        [&](float r) { return optics::Rgb<float>(rd.rd(double(r))); }, float(diag));
+    const auto profile = optics::radialTable(rd, float(diag));
     auto ring = ringFilter(profile, mKnobs, diag, stats);
     stats.samples = stats.figures["local_filter_samples"];
     stats.sampleUnit = "ring filter samples";
@@ -301,7 +299,8 @@ inline Technique tsisTechnique() {
   t.capabilities.gpuTwin = "vtkLucentPass";
   // The pass sums every sample at every pixel (a GPU watchdog stops long loops), and holds the
   // atlas and its position map as RGBA32F textures (8192^2 would be 1 GiB each).
-  t.capabilities.gpuTwinKnobs = {{"samples", 65536}, {"atlas-resolution", 4096}};
+  t.capabilities.gpuTwinKnobs = {
+      {"samples", 65536}, {"atlas-resolution", 4096}, {"rd"}, {"profile"}};
   t.defaultSweep = {{"samples", {"400", "1600", "6400"}}};
   t.quickKnobs = {{"samples", "256"}, {"atlas-resolution", "256"}, {"env-strata", "4"}};
   t.model = "dipole";

@@ -1,0 +1,101 @@
+#include "vtkLucentProfile.h"
+
+#include <algorithm>
+#include <vector>
+
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkShaderProgram.h>
+#include <vtkTextureObject.h>
+
+#include <lucent/optics/dipole_lut.hpp>
+#include <lucent/optics/profile.hpp>
+#include <lucent/technique/technique.hpp>
+
+#include "lucentPassDrawing.h"
+
+vtkStandardNewMacro(vtkLucentProfile);
+
+namespace {
+namespace lo = lucent::optics;
+namespace lt = lucent::technique;
+}  // namespace
+
+bool vtkLucentProfile::Update(vtkOpenGLRenderWindow* window, const lo::Material& material,
+                              const lt::KnobValues& knobs, double diagonalMm, std::string& warning,
+                              std::string& error) {
+  const std::string profile = knobs.text("profile");
+  const bool exact = knobs.text("rd") == "exact";
+  const lo::Profile<double> p = lt::detail::profileOf<double>(material, knobs);
+  const bool closedForm = exact && p.isPolePair();
+  if (exact && !closedForm)
+    warning = "rd=exact: profile " + profile + " has no closed-form kernel; its table is summed";
+  const std::string key = material.name + " " + profile + (closedForm ? " exact" : " table ") +
+                          (closedForm ? std::string() : std::to_string(diagonalMm));
+  if (key == this->BuiltKey) return true;
+  this->ExitScale = float(p.exitScale);
+  this->ClosedForm = closedForm;
+  if (closedForm) {
+    const lo::Dipole<double> poles = p.poles();
+    for (int c = 0; c < 3; ++c) {
+      const auto& ch = poles.channel[c];
+      const double v[6] = {ch.sigmaTr,    ch.zr,         ch.zv,
+                           ch.alphaPrime, ch.fluxWeight, ch.fluenceWeight};
+      for (int k = 0; k < 6; ++k) this->Dipole[k][c] = float(v[k]);
+    }
+    this->Nodes = 0;
+  } else if (!this->UploadTable(window, lt::detail::profileOf<float>(material, knobs), profile,
+                                diagonalMm, error)) {
+    this->BuiltKey.clear();
+    return false;
+  }
+  this->BuiltKey = key;
+  return true;
+}
+
+bool vtkLucentProfile::UploadTable(vtkOpenGLRenderWindow* window, const lo::Profile<float>& p,
+                                   const std::string& profile, double diagonalMm,
+                                   std::string& error) {
+  // The CPU tsis's own table: float, from the float profile, with RadialTable's stated bound.
+  const auto table = lo::radialTable(p, float(diagonalMm));
+  std::vector<float> rgba;
+  rgba.reserve(4 * table.size());
+  for (const auto& v : table.values()) rgba.insert(rgba.end(), {v[0], v[1], v[2], 0.0f});
+  if (!this->Table) this->Table = lucent::vtkpass::newNearestTexture(window);
+  const int rowLimit =
+      std::min(lucent::vtkpass::kMaxRowTexels, vtkTextureObject::GetMaximumTextureSize(window));
+  this->PerRow = std::max(1, std::min(int(table.size()), rowLimit));
+  this->Nodes = int(table.size());
+  this->RMax = table.rMax();
+  if (!lucent::vtkpass::uploadRows(this->Table, std::move(rgba), rowLimit)) {
+    error = "vtkLucentPass: the " + profile + " profile's table (" + std::to_string(table.size()) +
+            " nodes) could not be uploaded as a texture";
+    return false;
+  }
+  return true;
+}
+
+void vtkLucentProfile::Activate(vtkShaderProgram* program) {
+  const char* names[6] = {"dipole.sigmaTr",    "dipole.zr",         "dipole.zv",
+                          "dipole.alphaPrime", "dipole.fluxWeight", "dipole.fluenceWeight"};
+  for (int k = 0; k < 6; ++k) program->SetUniform3f(names[k], this->Dipole[k]);
+  program->SetUniformi("closedForm", this->ClosedForm ? 1 : 0);
+  program->SetUniformf("exitScale", this->ExitScale);
+  program->SetUniformi("profile.nodes", this->Nodes);
+  program->SetUniformi("profile.perRow", this->PerRow);
+  program->SetUniformf("profile.rMax", this->RMax);
+  if (this->Table) {
+    this->Table->Activate();
+    program->SetUniformi("profileTable", this->Table->GetTextureUnit());
+  }
+}
+
+void vtkLucentProfile::Deactivate() {
+  if (this->Table) this->Table->Deactivate();
+}
+
+void vtkLucentProfile::ReleaseGraphicsResources(vtkWindow* window) {
+  if (this->Table) this->Table->ReleaseGraphicsResources(window);
+  this->Table = nullptr;
+  this->BuiltKey.clear();
+}
