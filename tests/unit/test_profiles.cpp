@@ -188,6 +188,47 @@ TEST_CASE(
   }
 }
 
+TEST_CASE(
+    "The 2-D beam-diffusion table (albedo x optical radius) is within its stated error of the "
+    "quadrature across albedos, for eta 1, 1.3, 1.5 and 3") {
+  for (double eta : {1.0, 1.3, 1.5, 3.0}) {
+    const BeamDiffusionTable table(eta);
+    const double c1 = internalFresnelMoment(1, eta), c2 = internalFresnelMoment(2, eta);
+    double worst = 0, worstTotal = 0;
+    // Albedos dense near 1, where the profile changes fastest, and between the table's rows.
+    for (int k = 0; k <= 150; ++k) {
+      const double q = std::pow((k + 0.37) / 150.5, 2), albedo = 1 - q * q;
+      const BeamDiffusionProfile direct(albedo, eta, c1, c2);
+      const auto interpolated = table.profile(albedo);
+      const auto& want = direct.nodeValues();
+      const auto& got = interpolated->nodeValues();
+      REQUIRE(got.size() == want.size());
+      const double atOne = direct(1.0);  // R at one mean free path
+      for (std::size_t i = 0; i < want.size(); ++i) {
+        INFO("eta " << eta << " albedo " << albedo << " node " << i);
+        REQUIRE(std::isfinite(got[i]));
+        if (want[i] >= 1e-6 * atOne)
+          worst = std::max(worst, std::abs(got[i] - want[i]) / want[i]);
+        else
+          CHECK(std::abs(got[i] - want[i]) <= 1e-6 * atOne);
+      }
+      worstTotal =
+          std::max(worstTotal, std::abs(interpolated->total() - direct.total()) / direct.total());
+    }
+    MESSAGE("eta " << eta << ": worst node error " << worst << ", worst total error "
+                   << worstTotal);
+    CHECK(worst <= BeamDiffusionTable::kStatedNodeError);
+    CHECK(worstTotal <= BeamDiffusionTable::kStatedTotalError);
+  }
+  // The ends: no albedo scatters nothing; albedo 1 is the first row.
+  CHECK(BeamDiffusionTable(1.3).profile(0.0)->total() == 0);
+  CHECK(BeamDiffusionTable(1.3).profile(1.0)->total() ==
+        doctest::Approx(BeamDiffusionProfile(1.0, 1.3, internalFresnelMoment(1, 1.3),
+                                             internalFresnelMoment(2, 1.3))
+                            .total())
+            .epsilon(1e-9));
+}
+
 TEST_CASE("Every profile is finite and non-negative on the hard cases") {
   const double inf = std::numeric_limits<double>::infinity();
   for (const auto& info : kProfileModels)

@@ -47,23 +47,27 @@ class BeamDiffusionProfile {
   static constexpr double kLastRadius = 1e3;    ///< optical radius of the last node
   static constexpr int kNodesPerDecade = 24;
 
-  /// @param albedo reduced albedo rho' = sigma_s' / sigma_t' in [0, 1]; @param eta relative index;
-  /// @param c1, c2 the internal Fresnel moments of eta (fresnel_moments.hpp).
+  static constexpr int nodeCount() {
+    return 7 * kNodesPerDecade + 1;  // 7 decades, kFirstRadius to kLastRadius
+  }
+  static double nodeRadius(int i) {
+    return kFirstRadius * std::pow(10.0, double(i) / kNodesPerDecade);
+  }
+
+  /// By quadrature at every node. @param albedo reduced albedo rho' = sigma_s' / sigma_t' in
+  /// [0, 1]; @param eta relative index; @param c1, c2 the internal Fresnel moments of eta
+  /// (fresnel_moments.hpp).
   BeamDiffusionProfile(double albedo, double eta, double c1, double c2)
       : mAlbedo(std::clamp(albedo, 0.0, 1.0)), mEta(eta), mC1(c1), mC2(c2) {
-    const int decades = int(std::lround(std::log10(kLastRadius / kFirstRadius)));
-    const int n = decades * kNodesPerDecade + 1;
-    mRadius.resize(std::size_t(n));
-    mValue.resize(std::size_t(n));
-    mCumulative.resize(std::size_t(n));
-    for (int i = 0; i < n; ++i) {
-      mRadius[std::size_t(i)] = kFirstRadius * std::pow(10.0, double(i) / kNodesPerDecade);
-      mValue[std::size_t(i)] = exact(mRadius[std::size_t(i)]);
-    }
-    // The disc below the first node holds the first value; then each segment's exact integral.
-    mCumulative[0] = kPi * mRadius[0] * mRadius[0] * mValue[0];
-    for (std::size_t i = 1; i < mRadius.size(); ++i)
-      mCumulative[i] = mCumulative[i - 1] + segmentIntegral(i - 1, mRadius[i]);
+    std::vector<double> values(static_cast<std::size_t>(nodeCount()));
+    for (int i = 0; i < nodeCount(); ++i) values[std::size_t(i)] = exact(nodeRadius(i));
+    setNodes(std::move(values));
+  }
+  /// From given node values (BeamDiffusionTable's interpolation across albedos), one per
+  /// nodeRadius.
+  BeamDiffusionProfile(double albedo, double eta, double c1, double c2, std::vector<double> values)
+      : mAlbedo(std::clamp(albedo, 0.0, 1.0)), mEta(eta), mC1(c1), mC2(c2) {
+    setNodes(std::move(values));
   }
 
   /// R(r) evaluated by quadrature (what the table approximates; also the tests' reference).
@@ -91,8 +95,19 @@ class BeamDiffusionProfile {
   double total() const { return mCumulative.back(); }
   double albedo() const { return mAlbedo; }
   std::size_t nodes() const { return mRadius.size(); }
+  const std::vector<double>& nodeValues() const { return mValue; }
 
  private:
+  void setNodes(std::vector<double> values) {
+    mValue = std::move(values);
+    mRadius.resize(mValue.size());
+    mCumulative.resize(mValue.size());
+    for (std::size_t i = 0; i < mValue.size(); ++i) mRadius[i] = nodeRadius(int(i));
+    // The disc below the first node holds the first value; then each segment's exact integral.
+    mCumulative[0] = kPi * mRadius[0] * mRadius[0] * mValue[0];
+    for (std::size_t i = 1; i < mRadius.size(); ++i)
+      mCumulative[i] = mCumulative[i - 1] + segmentIntegral(i - 1, mRadius[i]);
+  }
   std::size_t segmentOf(double r) const {
     const double u = std::log10(r / kFirstRadius) * kNodesPerDecade;
     return std::min(std::size_t(std::max(u, 0.0)), mRadius.size() - 2);
@@ -179,38 +194,5 @@ inline double BeamDiffusionProfile::singleScattering(double r, int pointsScale) 
   };
   return detail::depthIntegral(integrand, tCritical, r, pointsScale);
 }
-
-/// Beam diffusion for one channel in mm: R(r) = sigma_t'^2 R_opt(r sigma_t').
-template <class T>
-struct BeamDiffusionChannel {
-  std::shared_ptr<const BeamDiffusionProfile> table;
-  T sigmaTPrime = 0;  ///< 0: nothing scatters
-  T sigmaTr = 0;      ///< the better dipole's, for the fall-off length
-
-  static BeamDiffusionChannel make(T sigmaA, T sigmaSPrime, T eta, double c1, double c2) {
-    BeamDiffusionChannel c;
-    const double st = double(sigmaA) + double(sigmaSPrime);
-    if (!(st > 0) || !(sigmaSPrime > T(0))) return c;
-    c.sigmaTPrime = T(st);
-    c.table = std::make_shared<BeamDiffusionProfile>(double(sigmaSPrime) / st, double(eta), c1, c2);
-    c.sigmaTr = DipoleChannel<T>::makeBetter(sigmaA, sigmaSPrime, T(c1), T(c2)).sigmaTr;
-    return c;
-  }
-  bool scatters() const { return table != nullptr; }
-  T rd(T r) const {
-    if (!table || !(r < std::numeric_limits<T>::infinity())) return T(0);
-    return T(double(sigmaTPrime) * double(sigmaTPrime) * (*table)(double(r * sigmaTPrime)));
-  }
-  T cumulative(T rho) const {
-    return table ? T(table->cumulative(double(rho * sigmaTPrime))) : T(0);
-  }
-  T total() const { return table ? T(table->total()) : T(0); }
-  T meanFreePath() const { return table ? T(1) / sigmaTPrime : T(1); }
-  T width() const {
-    const T lu = meanFreePath();
-    return sigmaTr > T(0) ? std::min(lu, T(1) / sigmaTr) : lu;
-  }
-  T reach() const { return T(8) * meanFreePath(); }
-};
 
 }  // namespace lucent::optics

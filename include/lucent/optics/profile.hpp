@@ -18,7 +18,7 @@
 #include <string>
 #include <string_view>
 
-#include "beam_diffusion.hpp"
+#include "beam_diffusion_table.hpp"
 #include "burley.hpp"
 #include "dipole.hpp"
 #include "dipole_lut.hpp"
