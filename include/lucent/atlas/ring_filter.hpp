@@ -2,15 +2,21 @@
 /// @file ring_filter.hpp
 /// @brief The circular filter of Chang et al. 2008 Sec. 4.2: L*C + 1 samples, one at the
 /// centre and C on each of L concentric rings whose radii follow the importance f(r) 2 pi r of the
-/// filtered profile f (Rd Wl for the hybrid's local term, Rd for a plain translucent shadow map), as
-/// Mertens et al. 2003 chose radii.
+/// filtered profile f (Rd Wl for the hybrid's local term, Rd for a plain translucent shadow map),
+/// as Mertens et al. 2003 chose radii.
 ///
 /// The radial axis is cut into L + 1 strata of equal importance; the centre sample stands for the
-/// innermost disc and ring k for stratum k, at the radius where the importance CDF reaches the stratum's
-/// middle. A sample estimates its stratum's integral by the ratio estimator
-///   int_stratum rho f dA  ~=  M_k,c * rho(x) f_c(|x - x_o|) / f_c(r_k),   M_k,c = int_stratum f_c 2 pi r dr,
+/// innermost disc and ring k for stratum k, at the radius where the importance CDF reaches the
+/// stratum's middle. A sample estimates its stratum's integral by the ratio estimator
+///   int_stratum rho f dA  ~=  M_k,c * rho(x) f_c(|x - x_o|) / f_c(r_k),   M_k,c = int_stratum f_c
+///   2 pi r dr,
 /// which is exact on a flat, uniformly lit surface (|x - x_o| = r_k) and, f being decreasing, never
-/// amplifies a sample (|x - x_o| >= r_k).
+/// amplifies a sample (|x - x_o| >= r_k). The centre sample stands for the whole disc [0, R_0],
+/// where r_0 = 0 is no representative radius for a profile singular at 0 (pbd, Burley: f(0) is
+/// their held core, so f(d) / f(0) drops the disc's mass, measured 10 % of blue on a skin sphere).
+/// Its estimator is the disc seen from a distance d off its plane, exact for a flat disc:
+///   M_0,c * T_c(d),  T_c(d) = (C_c(sqrt(R_0^2 + d^2)) - C_c(d)) / C_c(R_0),
+/// with C_c(r) = int_0^r f_c 2 pi r dr (centreTransfer; T(0) = 1 for every profile).
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -25,19 +31,45 @@ namespace lucent::atlas {
 
 struct RingFilter {
   int rings = 0, perRing = 0;
-  std::vector<double> radius;          ///< [0] = 0 (centre), then the L ring radii (mm)
-  std::vector<glm::dvec3> mass;        ///< M_k per channel, same indexing
-  std::vector<glm::dvec3> profileAt;   ///< f_c(radius[k])
-  double outerRadius = 0;              ///< the filter's extent: the strata cover [0, outerRadius]
+  std::vector<double> radius;         ///< [0] = 0 (centre), then the L ring radii (mm)
+  std::vector<glm::dvec3> mass;       ///< M_k per channel, same indexing
+  std::vector<glm::dvec3> profileAt;  ///< f_c(radius[k])
+  double outerRadius = 0;             ///< the filter's extent: the strata cover [0, outerRadius]
+  /// C_c on r_j = domain (j / J)^2 (the grid the radii were placed on), for centreTransfer.
+  std::vector<glm::dvec3> cumulative;
+  double domain = 0;
   int sampleCount() const { return rings * perRing + 1; }
+
+  /// C_c(r), linear between the grid's nodes; the total beyond the domain.
+  glm::dvec3 cumulativeAt(double r) const {
+    if (cumulative.size() < 2 || !(r > 0)) return glm::dvec3(0);
+    const double last = double(cumulative.size() - 1);
+    const double u = std::sqrt(r / domain) * last;
+    if (!(u < last)) return cumulative.back();
+    const std::size_t j = std::size_t(u);
+    const double t = u - double(j);
+    return cumulative[j] * (1 - t) + cumulative[j + 1] * t;
+  }
+  /// T_c(d), the centre sample's transfer at distance d (file comment): 1 at d = 0.
+  glm::dvec3 centreTransfer(double d) const {
+    const glm::dvec3 disc = cumulativeAt(innerRadius);
+    const glm::dvec3 seen = cumulativeAt(std::hypot(innerRadius, d)) - cumulativeAt(d);
+    glm::dvec3 t(0);
+    for (int c = 0; c < 3; ++c) t[c] = disc[c] > 0 ? std::clamp(seen[c] / disc[c], 0.0, 1.0) : 0.0;
+    return t;
+  }
+  double innerRadius = 0;  ///< R_0, the outer edge of the centre's disc
 };
 
-/// @param profile callable double -> glm::dvec3, f(r) >= 0 and non-increasing; @param domain the largest
-/// distance considered (the object's diagonal); @param coverage the share of the importance the strata
-/// cover (the rest of the far tail is dropped: it belongs to the global term or is negligible).
+/// @param profile callable double -> glm::dvec3, f(r) >= 0 and non-increasing; @param domain the
+/// largest distance considered (the object's diagonal); @param coverage the share of the importance
+/// the strata cover (the rest of the far tail is dropped: it belongs to the global term or is
+/// negligible).
 template <class Profile>
-RingFilter makeRingFilter(const Profile& profile, int rings, int perRing, double domain, double coverage = 0.9995) {
-  if (rings < 1 || perRing < 1) throw std::invalid_argument("ring filter needs L >= 1 rings of C >= 1 samples");
+RingFilter makeRingFilter(const Profile& profile, int rings, int perRing, double domain,
+                          double coverage = 0.9995) {
+  if (rings < 1 || perRing < 1)
+    throw std::invalid_argument("ring filter needs L >= 1 rings of C >= 1 samples");
   if (!(domain > 0)) throw std::invalid_argument("ring filter domain must be > 0");
   // Cumulative importance per channel on a grid dense near 0, where f peaks (r_j = domain (j/J)^2).
   constexpr int kGrid = 8192;
@@ -48,7 +80,8 @@ RingFilter makeRingFilter(const Profile& profile, int rings, int perRing, double
     const double s = double(j) / kGrid;
     r[std::size_t(j)] = domain * s * s;
     const glm::dvec3 cur = profile(r[std::size_t(j)]) * (2 * optics::kPi * r[std::size_t(j)]);
-    cum[std::size_t(j)] = cum[std::size_t(j) - 1] + 0.5 * (prev + cur) * (r[std::size_t(j)] - r[std::size_t(j) - 1]);
+    cum[std::size_t(j)] =
+        cum[std::size_t(j) - 1] + 0.5 * (prev + cur) * (r[std::size_t(j)] - r[std::size_t(j) - 1]);
     prev = cur;
   }
   // Channels weigh equally in the combined importance that places the radii.
@@ -58,16 +91,18 @@ RingFilter makeRingFilter(const Profile& profile, int rings, int perRing, double
   for (int c = 0; c < 3; ++c) active += total[c] > 0;
   for (int j = 0; j <= kGrid; ++j)
     for (int c = 0; c < 3; ++c)
-      if (total[c] > 0) combined[std::size_t(j)] += cum[std::size_t(j)][c] / total[c] / std::max(active, 1);
-  auto inverse = [&](double q) {  // radius where the combined CDF reaches q (linear between grid nodes)
-    const auto it = std::lower_bound(combined.begin(), combined.end(), q);
-    if (it == combined.begin()) return 0.0;
-    if (it == combined.end()) return domain;
-    const std::size_t j = std::size_t(it - combined.begin());
-    const double span = combined[j] - combined[j - 1];
-    const double f = span > 0 ? (q - combined[j - 1]) / span : 0.0;
-    return r[j - 1] + f * (r[j] - r[j - 1]);
-  };
+      if (total[c] > 0)
+        combined[std::size_t(j)] += cum[std::size_t(j)][c] / total[c] / std::max(active, 1);
+  auto inverse =
+      [&](double q) {  // radius where the combined CDF reaches q (linear between grid nodes)
+        const auto it = std::lower_bound(combined.begin(), combined.end(), q);
+        if (it == combined.begin()) return 0.0;
+        if (it == combined.end()) return domain;
+        const std::size_t j = std::size_t(it - combined.begin());
+        const double span = combined[j] - combined[j - 1];
+        const double f = span > 0 ? (q - combined[j - 1]) / span : 0.0;
+        return r[j - 1] + f * (r[j] - r[j - 1]);
+      };
   auto cumAt = [&](double radius) {  // per-channel cumulative at any radius (linear between nodes)
     const auto it = std::lower_bound(r.begin(), r.end(), radius);
     if (it == r.begin()) return glm::dvec3(0);
@@ -80,6 +115,8 @@ RingFilter makeRingFilter(const Profile& profile, int rings, int perRing, double
   RingFilter filter;
   filter.rings = rings;
   filter.perRing = perRing;
+  filter.domain = domain;
+  filter.cumulative = cum;
   if (active == 0) {  // nothing scatters: an empty filter (every mass 0)
     filter.radius.assign(std::size_t(rings) + 1, 0.0);
     filter.mass.assign(std::size_t(rings) + 1, glm::dvec3(0));
@@ -93,6 +130,7 @@ RingFilter makeRingFilter(const Profile& profile, int rings, int perRing, double
     const double lo = inverse(cover * k / strata), hi = inverse(cover * (k + 1) / strata);
     const double rk = k == 0 ? 0.0 : inverse(cover * (k + 0.5) / strata);
     filter.radius.push_back(rk);
+    if (k == 0) filter.innerRadius = hi;
     filter.mass.push_back(cumAt(hi) - cumAt(lo));
     filter.profileAt.push_back(profile(rk));
   }

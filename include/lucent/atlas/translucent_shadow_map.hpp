@@ -135,7 +135,12 @@ class TranslucentShadowMap {
   glm::dvec3 filter(const glm::dvec3& xo, const RingFilter& ring, const Profile& profile) const {
     glm::dvec3 sum(0);
     forEachTap(xo, ring, [&](std::size_t i, std::size_t k, double share) {
-      const glm::dvec3 f = profile(glm::length(glm::dvec3(mPosition[i]) - xo));
+      const double d = glm::length(glm::dvec3(mPosition[i]) - xo);
+      if (k == 0) {  // the centre's disc (ring_filter.hpp): exact for a flat disc d off its plane
+        sum += ring.mass[0] * glm::dvec3(mDensity[i]) * ring.centreTransfer(d);
+        return;
+      }
+      const glm::dvec3 f = profile(d);
       for (int c = 0; c < 3; ++c)
         if (ring.profileAt[k][c] > 0)
           sum[c] += share * ring.mass[k][c] * double(mDensity[i][c]) * f[c] / ring.profileAt[k][c];
