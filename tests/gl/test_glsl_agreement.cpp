@@ -94,10 +94,11 @@ TEST_CASE(
   constexpr double kDiagonalMm = 40.0;
   lucent_test::QuadProbe probe(kWidth, 1);
   REQUIRE(probe.program(probeShader(
-      "  float r = t == 0.0 ? 0.0 : 1e-5 * pow(1.2 * 40.0 / 1e-5, t);\n"
-      "  vec3 rd = closedForm != 0 ? lucentDipoleRd(dipole, r)\n"
-      "                            : lucentRadialTableRd(profileTable, profile, r);\n"
-      "  gl_FragData[0] = vec4(exitScale * rd, r);\n",
+      "  float r = t == 0.0 ? 0.0 : 1e-5 * pow(1.2 * " + std::to_string(kDiagonalMm) +
+          " / 1e-5, t);\n"
+          "  vec3 rd = closedForm != 0 ? lucentDipoleRd(dipole, r)\n"
+          "                            : lucentRadialTableRd(profileTable, profile, r);\n"
+          "  gl_FragData[0] = vec4(exitScale * rd, r);\n",
       "uniform int closedForm;\nuniform float exitScale;\nuniform sampler2D profileTable;\n"
       "uniform LucentRadialTable profile;\n")));
   const auto tsis = lt::tsisTechnique();
@@ -118,8 +119,9 @@ TEST_CASE(
         gpu->Deactivate();
         (gpu->IsClosedForm() ? closed : tables) += 1;
         const lo::RdTableBound<float> bound;
-        const double r0 = exact.regularFrom();  // the table's bound holds from here on
-        const auto peak = exact.rd(r0);
+        const auto r0 = exact.regularFrom();  // the table's bound holds from here on, per channel
+        glm::dvec3 peak;
+        for (int c = 0; c < 3; ++c) peak[c] = exact.rd(r0[c])[c];
         for (int i = 0; i < kWidth; ++i) {
           const double r = out[4 * i + 3];
           const auto want = exact.rd(r) * exact.exitScale;
@@ -132,7 +134,7 @@ TEST_CASE(
               if (!gpu->IsClosedForm()) CHECK(got == 0.0f);
               continue;
             }
-            if (r < r0) continue;
+            if (r < r0[c]) continue;
             // The table's stated bound (RdTableBound), with float's rounding of the profile on top.
             const double allowed =
                 gpu->IsClosedForm()

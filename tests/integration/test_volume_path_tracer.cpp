@@ -129,6 +129,28 @@ TEST_CASE("White furnace: albedo-1 media under uniform light return exactly the 
 }
 
 TEST_CASE(
+    "Russian roulette reads the physical throughput: behind eta 1.3, a non-absorbing grey medium "
+    "ends no path, and returns the furnace's radiance") {
+  // Entering eta 1.3 scales a camera path's radiance by (1/1.3)^2, which its exit undoes. Read as
+  // a loss of throughput it ended 41 % of these paths at their 4th scatter.
+  const double R = 1.0;
+  const auto env = uniformEnvironment(1.0);
+  reference::PathTracerSettings s;
+  s.rayEpsilon = 1e-6;
+  reference::MediumScene scene;
+  scene.addBody(scene::shapes::sphere(R, 4),
+                scene.addMedium(medium(glm::dvec3(0), glm::dvec3(4), 1.3)), 0);
+  const raycast::EmbreeRayCaster caster(scene.mesh);
+  const reference::VolumePathTracer tracer(scene, caster, {env}, s);
+  const Estimate e = estimate(
+      tracer, 20000, [&](std::size_t, util::Rng& rng) { return rayThroughSphere(R, rng); }, 3);
+  checkWithin(e, glm::dvec3(1), 4, "grey Fresnel sphere");
+  checkClean(e.stats);
+  CHECK(e.stats.scatterEvents > 4 * e.stats.cameraSamples);  // deep enough for roulette to act
+  CHECK(e.stats.rouletteTerminations == 0);
+}
+
+TEST_CASE(
     "Index-matched isotropic half-space: reflected radiance = (a E / 4pi) H(mu) H(1) / (1 + mu)") {
   // Chandrasekhar (1960): diffuse reflection of a normally incident parallel beam by a
   // semi-infinite, isotropically scattering medium; its single-scattering part is (a E / 4pi) / (1

@@ -47,6 +47,40 @@ TEST_CASE("Ring filter: nothing scatters -> an empty filter, no NaN") {
   CHECK_THROWS(atlas::makeRingFilter([](double) { return glm::dvec3(1); }, 0, 4, 10.0));
 }
 
+TEST_CASE(
+    "Ring filter: the centre's disc transfer is 1 at d = 0, falls with d, and is the closed form "
+    "of an exponential profile, and keeps its mass for a profile singular at 0") {
+  // f_c = e^{-s_c r}: C(r) = int_0^r f 2 pi r dr = 2 pi (1 - e^{-s r} (1 + s r)) / s^2, typed here.
+  const glm::dvec3 sigma(0.5, 2.0, 8.0);
+  const auto f = [&](double r) { return glm::exp(-sigma * r); };
+  const auto filter = lucent::atlas::makeRingFilter(f, 8, 8, 40.0);
+  const auto closed = [&](double r, int c) {
+    const double s = sigma[c];
+    return 2 * M_PI * (1 - std::exp(-s * r) * (1 + s * r)) / (s * s);
+  };
+  const double r0 = filter.innerRadius;
+  REQUIRE(r0 > 0);
+  glm::dvec3 previous(1.0);
+  for (const double d : {0.0, 0.01, 0.1, 0.3, 1.0, 3.0, 10.0}) {
+    const glm::dvec3 t = filter.centreTransfer(d);
+    for (int c = 0; c < 3; ++c) {
+      INFO("d " << d << " channel " << c);
+      const double want = (closed(std::hypot(r0, d), c) - closed(d, c)) / closed(r0, c);
+      CHECK(t[c] == doctest::Approx(want).epsilon(2e-3));
+      CHECK(t[c] <= previous[c] + 1e-12);
+    }
+    if (d == 0) CHECK(t == glm::dvec3(1.0));
+    previous = t;
+  }
+  // A 1/r profile held below 1e-4 (as pbd and Burley are): the disc keeps its mass at d = 0.
+  const auto singular = lucent::atlas::makeRingFilter(
+      [](double r) { return glm::dvec3(1.0 / std::max(r, 1e-4)); }, 8, 8, 10.0);
+  CHECK(singular.centreTransfer(0.0) == glm::dvec3(1.0));
+  const glm::dvec3 half = singular.centreTransfer(0.5 * singular.innerRadius);
+  // 1/r: T(d) = (sqrt(R^2 + d^2) - d) / R = sqrt(1.25) - 0.5 at d = R / 2.
+  CHECK(half.x == doctest::Approx(std::sqrt(1.25) - 0.5).epsilon(2e-3));
+}
+
 TEST_CASE("Hybrid profiles: Rd Wl + Rd Wg = Rd within the tables' bounds, for every material") {
   for (const auto& entry : optics::kMeasuredMaterials) {
     const optics::Material m = optics::toMaterial(entry);

@@ -33,6 +33,8 @@ bool vtkLucentProfile::Update(vtkOpenGLRenderWindow* window, const lo::Material&
   const std::string key = material.name + " " + profile + (closedForm ? " exact" : " table ") +
                           (closedForm ? std::string() : std::to_string(diagonalMm));
   if (key == this->BuiltKey) return true;
+  // Until the new state is complete (the table can throw or fail), nothing counts as built.
+  this->BuiltKey.clear();
   this->ExitScale = float(p.exitScale);
   this->ClosedForm = closedForm;
   if (closedForm) {
@@ -46,7 +48,6 @@ bool vtkLucentProfile::Update(vtkOpenGLRenderWindow* window, const lo::Material&
     this->Nodes = 0;
   } else if (!this->UploadTable(window, lt::detail::profileOf<float>(material, knobs), profile,
                                 diagonalMm, error)) {
-    this->BuiltKey.clear();
     return false;
   }
   this->BuiltKey = key;
@@ -62,8 +63,9 @@ bool vtkLucentProfile::UploadTable(vtkOpenGLRenderWindow* window, const lo::Prof
   rgba.reserve(4 * table.size());
   for (const auto& v : table.values()) rgba.insert(rgba.end(), {v[0], v[1], v[2], 0.0f});
   if (!this->Table) this->Table = lucent::vtkpass::newNearestTexture(window);
-  const int rowLimit =
-      std::min(lucent::vtkpass::kMaxRowTexels, vtkTextureObject::GetMaximumTextureSize(window));
+  const int glLimit = vtkTextureObject::GetMaximumTextureSize(window);  // -1 without a context
+  const int rowLimit = glLimit > 0 ? std::min(lucent::vtkpass::kMaxRowTexels, glLimit)
+                                   : lucent::vtkpass::kMaxRowTexels;
   this->PerRow = std::max(1, std::min(int(table.size()), rowLimit));
   this->Nodes = int(table.size());
   this->RMax = table.rMax();

@@ -26,12 +26,12 @@ struct HybridProfiles {
             [&](float r) {
               return optics::Rgb<float>(d.rd(double(r)) * localWeight(double(r), rp_, k_));
             },
-            float(rMax), {}, float(d.regularFrom())),
+            float(rMax), {}, optics::Rgb<float>(d.regularFrom())),
         global(
             [&](float r) {
               return optics::Rgb<float>(d.rd(double(r)) * globalWeight(double(r), rp_, k_));
             },
-            float(rMax), {}, float(d.regularFrom())) {}
+            float(rMax), {}, optics::Rgb<float>(d.regularFrom())) {}
 };
 
 /// The local term: one translucent shadow map per light, each filtered with the same ring filter.

@@ -8,8 +8,8 @@
 /// The radial axis is cut into L + 1 strata of equal importance; the centre sample stands for the
 /// innermost disc and ring k for stratum k, at the radius where the importance CDF reaches the
 /// stratum's middle. A sample estimates its stratum's integral by the ratio estimator
-///   int_stratum rho f dA  ~=  M_k,c * rho(x) f_c(|x - x_o|) / f_c(r_k),   M_k,c = int_stratum f_c
-///   2 pi r dr,
+///   int_stratum rho f dA  ~=  M_k,c * rho(x) f_c(|x - x_o|) / f_c(r_k),
+///   M_k,c = int_stratum f_c 2 pi r dr,
 /// which is exact on a flat, uniformly lit surface (|x - x_o| = r_k) and, f being decreasing, never
 /// amplifies a sample (|x - x_o| >= r_k). The centre sample stands for the whole disc [0, R_0],
 /// where r_0 = 0 is no representative radius for a profile singular at 0 (pbd, Burley: f(0) is
@@ -35,6 +35,7 @@ struct RingFilter {
   std::vector<glm::dvec3> mass;       ///< M_k per channel, same indexing
   std::vector<glm::dvec3> profileAt;  ///< f_c(radius[k])
   double outerRadius = 0;             ///< the filter's extent: the strata cover [0, outerRadius]
+  double innerRadius = 0;             ///< R_0, the outer edge of the centre's disc
   /// C_c on r_j = domain (j / J)^2 (the grid the radii were placed on), for centreTransfer.
   std::vector<glm::dvec3> cumulative;
   double domain = 0;
@@ -58,8 +59,56 @@ struct RingFilter {
     for (int c = 0; c < 3; ++c) t[c] = disc[c] > 0 ? std::clamp(seen[c] / disc[c], 0.0, 1.0) : 0.0;
     return t;
   }
-  double innerRadius = 0;  ///< R_0, the outer edge of the centre's disc
 };
+
+namespace detail {
+/// Nodes of the cumulative grid: r_j = domain (j / J)^2, dense near 0 where f peaks.
+constexpr int kRingGrid = 8192;
+inline double ringGridRadius(int j, double domain) {
+  const double s = double(j) / kRingGrid;
+  return domain * s * s;
+}
+
+/// C_c(r_j) = int_0^{r_j} f_c 2 pi r dr per channel, by the trapezoid rule on the grid.
+template <class Profile>
+std::vector<glm::dvec3> cumulativeGrid(const Profile& profile, double domain) {
+  std::vector<glm::dvec3> cum(kRingGrid + 1, glm::dvec3(0));
+  glm::dvec3 prev(0);
+  for (int j = 1; j <= kRingGrid; ++j) {
+    const double r = ringGridRadius(j, domain), rPrev = ringGridRadius(j - 1, domain);
+    const glm::dvec3 cur = profile(r) * (2 * optics::kPi * r);
+    cum[std::size_t(j)] = cum[std::size_t(j) - 1] + 0.5 * (prev + cur) * (r - rPrev);
+    prev = cur;
+  }
+  return cum;
+}
+
+/// The channels' CDFs averaged (each channel weighs equally in placing the radii); empty when no
+/// channel scatters.
+inline std::vector<double> combinedCdf(const std::vector<glm::dvec3>& cum) {
+  const glm::dvec3 total = cum.back();
+  int active = 0;
+  for (int c = 0; c < 3; ++c) active += total[c] > 0;
+  if (active == 0) return {};
+  std::vector<double> combined(cum.size(), 0.0);
+  for (std::size_t j = 0; j < cum.size(); ++j)
+    for (int c = 0; c < 3; ++c)
+      if (total[c] > 0) combined[j] += cum[j][c] / total[c] / active;
+  return combined;
+}
+
+/// The radius where the combined CDF reaches q (linear between grid nodes).
+inline double radiusAtFraction(const std::vector<double>& combined, double q, double domain) {
+  const auto it = std::lower_bound(combined.begin(), combined.end(), q);
+  if (it == combined.begin()) return 0.0;
+  if (it == combined.end()) return domain;
+  const int j = int(it - combined.begin());
+  const double span = combined[std::size_t(j)] - combined[std::size_t(j) - 1];
+  const double f = span > 0 ? (q - combined[std::size_t(j) - 1]) / span : 0.0;
+  const double lo = ringGridRadius(j - 1, domain);
+  return lo + f * (ringGridRadius(j, domain) - lo);
+}
+}  // namespace detail
 
 /// @param profile callable double -> glm::dvec3, f(r) >= 0 and non-increasing; @param domain the
 /// largest distance considered (the object's diagonal); @param coverage the share of the importance
@@ -71,58 +120,19 @@ RingFilter makeRingFilter(const Profile& profile, int rings, int perRing, double
   if (rings < 1 || perRing < 1)
     throw std::invalid_argument("ring filter needs L >= 1 rings of C >= 1 samples");
   if (!(domain > 0)) throw std::invalid_argument("ring filter domain must be > 0");
-  // Cumulative importance per channel on a grid dense near 0, where f peaks (r_j = domain (j/J)^2).
-  constexpr int kGrid = 8192;
-  std::vector<double> r(kGrid + 1);
-  std::vector<glm::dvec3> cum(kGrid + 1, glm::dvec3(0));
-  glm::dvec3 prev = profile(0.0) * 0.0;
-  for (int j = 1; j <= kGrid; ++j) {
-    const double s = double(j) / kGrid;
-    r[std::size_t(j)] = domain * s * s;
-    const glm::dvec3 cur = profile(r[std::size_t(j)]) * (2 * optics::kPi * r[std::size_t(j)]);
-    cum[std::size_t(j)] =
-        cum[std::size_t(j) - 1] + 0.5 * (prev + cur) * (r[std::size_t(j)] - r[std::size_t(j) - 1]);
-    prev = cur;
-  }
-  // Channels weigh equally in the combined importance that places the radii.
-  const glm::dvec3 total = cum.back();
-  std::vector<double> combined(kGrid + 1, 0.0);
-  int active = 0;
-  for (int c = 0; c < 3; ++c) active += total[c] > 0;
-  for (int j = 0; j <= kGrid; ++j)
-    for (int c = 0; c < 3; ++c)
-      if (total[c] > 0)
-        combined[std::size_t(j)] += cum[std::size_t(j)][c] / total[c] / std::max(active, 1);
-  auto inverse =
-      [&](double q) {  // radius where the combined CDF reaches q (linear between grid nodes)
-        const auto it = std::lower_bound(combined.begin(), combined.end(), q);
-        if (it == combined.begin()) return 0.0;
-        if (it == combined.end()) return domain;
-        const std::size_t j = std::size_t(it - combined.begin());
-        const double span = combined[j] - combined[j - 1];
-        const double f = span > 0 ? (q - combined[j - 1]) / span : 0.0;
-        return r[j - 1] + f * (r[j] - r[j - 1]);
-      };
-  auto cumAt = [&](double radius) {  // per-channel cumulative at any radius (linear between nodes)
-    const auto it = std::lower_bound(r.begin(), r.end(), radius);
-    if (it == r.begin()) return glm::dvec3(0);
-    if (it == r.end()) return cum.back();
-    const std::size_t j = std::size_t(it - r.begin());
-    const double f = (radius - r[j - 1]) / (r[j] - r[j - 1]);
-    return cum[j - 1] + f * (cum[j] - cum[j - 1]);
-  };
-
   RingFilter filter;
   filter.rings = rings;
   filter.perRing = perRing;
   filter.domain = domain;
-  filter.cumulative = cum;
-  if (active == 0) {  // nothing scatters: an empty filter (every mass 0)
+  filter.cumulative = detail::cumulativeGrid(profile, domain);
+  const std::vector<double> combined = detail::combinedCdf(filter.cumulative);
+  if (combined.empty()) {  // nothing scatters: an empty filter (every mass 0)
     filter.radius.assign(std::size_t(rings) + 1, 0.0);
     filter.mass.assign(std::size_t(rings) + 1, glm::dvec3(0));
     filter.profileAt.assign(std::size_t(rings) + 1, glm::dvec3(0));
     return filter;
   }
+  const auto inverse = [&](double q) { return detail::radiusAtFraction(combined, q, domain); };
   const double cover = std::clamp(coverage, 0.5, 1.0);
   filter.outerRadius = inverse(cover);
   const int strata = rings + 1;
@@ -131,7 +141,7 @@ RingFilter makeRingFilter(const Profile& profile, int rings, int perRing, double
     const double rk = k == 0 ? 0.0 : inverse(cover * (k + 0.5) / strata);
     filter.radius.push_back(rk);
     if (k == 0) filter.innerRadius = hi;
-    filter.mass.push_back(cumAt(hi) - cumAt(lo));
+    filter.mass.push_back(filter.cumulativeAt(hi) - filter.cumulativeAt(lo));
     filter.profileAt.push_back(profile(rk));
   }
   return filter;

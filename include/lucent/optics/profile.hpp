@@ -196,16 +196,19 @@ struct Profile {
       if (c.scatters() && c.meanFreePath() < m) m = c.meanFreePath();
     return m;
   }
-  /// Where the profile stops being a regularised singularity: 0 for the pole pairs (finite at
-  /// r = 0); for the others 1e-3 of the smallest mean free path. Beam diffusion (R_ss ~ 1/r) and
-  /// Burley (1/r) hold their value constant below 1e-4 of their scale, and a 1/r profile leaves
-  /// at most 0.5 % of its light inside this radius (measured over the materials: 0.47 %). Tables
-  /// state their bound from here on (RadialTable).
-  T regularFrom() const {
-    const T l = minMeanFreePath();
-    return isPolePair() || !(l < std::numeric_limits<T>::infinity()) ? T(0) : T(1e-3) * l;
+  /// Per channel, where the profile stops being a regularised singularity: 0 for the pole pairs
+  /// (finite at r = 0); for the others 1e-3 of the channel's mean free path. Beam diffusion
+  /// (R_ss ~ 1/r) and Burley (1/r) hold their value constant below 1e-4 of their scale, and a 1/r
+  /// profile leaves at most 0.5 % of its light inside this radius (measured over the materials,
+  /// tests/unit/test_dipole_lut.cpp). Tables state their bound from here on (RadialTable).
+  Rgb<T> regularFrom() const {
+    Rgb<T> r(0);
+    for (int c = 0; c < kChannels; ++c)
+      if (!isPolePair() && channel[c].scatters()) r[c] = T(1e-3) * channel[c].meanFreePath();
+    return r;
   }
-  /// The classic dipole's fields, for code that evaluates its closed form (the GPU pass).
+  /// The pole pairs' fields (the classic or the better dipole, with C_E and C_phi / D), for code
+  /// that evaluates their closed form (the truth's kernel, the GPU pass).
   Dipole<T> poles() const {
     Dipole<T> d;
     d.eta = eta;
@@ -220,7 +223,7 @@ struct Profile {
 template <class T, class P>
 RadialTable<T> radialTable(const Profile<P>& profile, T rMax, RdTableBound<T> bound = {}) {
   return RadialTable<T>([&profile](T r) { return Rgb<T>(profile.rd(P(r))); }, rMax, bound,
-                        T(profile.regularFrom()));
+                        Rgb<T>(profile.regularFrom()));
 }
 
 }  // namespace lucent::optics

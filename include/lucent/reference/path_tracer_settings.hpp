@@ -10,51 +10,65 @@ namespace lucent::reference {
 /// Which paths count, by their number of volume scattering events.
 enum class ScatteringOrders { All, Single, Multiple };
 
-/// How environment light reaches the medium: paths that escape look it up (default: every order), or
-/// it is sampled like a delta light and joined to camera vertices (the estimator delta lights must use
-/// behind a refracting boundary; offered for environments so the two can be checked against each other).
+/// How environment light reaches the medium: paths that escape look it up (default: every order),
+/// or it is sampled like a delta light and joined to camera vertices (the estimator delta lights
+/// must use behind a refracting boundary; offered for environments so the two can be checked
+/// against each other).
 enum class EnvironmentStrategy { Escape, Connect };
 
 struct PathTracerSettings {
   int samplesPerPixel = 16;
   std::uint64_t seed = 1;
-  /// Surface and scattering events per subpath before it is dropped (counted; only albedo-1 media of
-  /// many mean free paths reach it).
+  /// Surface and scattering events per subpath before it is dropped (counted; only albedo-1 media
+  /// of many mean free paths reach it).
   std::uint64_t maxEvents = 200000;
-  bool subsurfaceOnly = false;  ///< the camera's first surface transmits (weight Ft), never reflects
+  bool subsurfaceOnly =
+      false;  ///< the camera's first surface transmits (weight Ft), never reflects
   ScatteringOrders orders = ScatteringOrders::All;
   EnvironmentStrategy environment = EnvironmentStrategy::Escape;
   /// Escaping paths count only if two successive scattering events see each other along a straight
   /// segment: exactly the paths a delta light can reach through a refracting boundary (for checks).
   bool connectableOnly = false;
-  int lightSubpaths = 1;       ///< light subpaths per light and camera sample (delta lights, Fresnel boundary)
-  int maxLightVertices = 16;   ///< targets kept per light subpath
-  double guideRadius = 0;      ///< mm: scale of the light-entry sampling around the camera's entry point; 0 = auto
-  double rayEpsilon = 1e-6;    ///< mm: offset of new rays off a surface
+  int lightSubpaths =
+      1;  ///< light subpaths per light and camera sample (delta lights, Fresnel boundary)
+  int maxLightVertices = 16;  ///< targets kept per light subpath
+  double guideRadius =
+      0;  ///< mm: scale of the light-entry sampling around the camera's entry point; 0 = auto
+  double rayEpsilon = 1e-6;  ///< mm: offset of new rays off a surface
 };
 
 struct PathTracerStats {
   std::uint64_t cameraSamples = 0, scatterEvents = 0;
   std::uint64_t lightSubpaths = 0, lightVertices = 0, connections = 0;
-  std::uint64_t truncatedPaths = 0;     ///< reached maxEvents (their remaining weight is lost)
-  std::uint64_t leakedPaths = 0;        ///< found no surface from inside a medium (an open or broken mesh)
-  std::uint64_t mediumMismatches = 0;   ///< a surface's declared media disagree with the path's (nesting errors)
-  std::uint64_t nonFiniteSamples = 0;   ///< dropped NaN/inf estimates (must stay 0)
+  std::uint64_t truncatedPaths = 0;  ///< reached maxEvents (their remaining weight is lost)
+  std::uint64_t leakedPaths =
+      0;  ///< found no surface from inside a medium (an open or broken mesh)
+  std::uint64_t mediumMismatches =
+      0;  ///< a surface's declared media disagree with the path's (nesting errors)
+  std::uint64_t nonFiniteSamples = 0;      ///< dropped NaN/inf estimates (must stay 0)
+  std::uint64_t rouletteTerminations = 0;  ///< camera paths ended by Russian roulette
   MediumSamplingStats medium;
 
   void add(const PathTracerStats& o) {
     cameraSamples += o.cameraSamples, scatterEvents += o.scatterEvents;
-    lightSubpaths += o.lightSubpaths, lightVertices += o.lightVertices, connections += o.connections;
-    truncatedPaths += o.truncatedPaths, leakedPaths += o.leakedPaths, mediumMismatches += o.mediumMismatches;
-    nonFiniteSamples += o.nonFiniteSamples, medium.majorantViolations += o.medium.majorantViolations;
+    lightSubpaths += o.lightSubpaths, lightVertices += o.lightVertices,
+        connections += o.connections;
+    truncatedPaths += o.truncatedPaths, leakedPaths += o.leakedPaths,
+        mediumMismatches += o.mediumMismatches;
+    nonFiniteSamples += o.nonFiniteSamples,
+        medium.majorantViolations += o.medium.majorantViolations;
+    rouletteTerminations += o.rouletteTerminations;
   }
 };
 
 inline bool orderCounts(ScatteringOrders orders, int scatteringEvents) {
   switch (orders) {
-    case ScatteringOrders::Single: return scatteringEvents == 1;
-    case ScatteringOrders::Multiple: return scatteringEvents >= 2;
-    default: return true;
+    case ScatteringOrders::Single:
+      return scatteringEvents == 1;
+    case ScatteringOrders::Multiple:
+      return scatteringEvents >= 2;
+    default:
+      return true;
   }
 }
 

@@ -90,6 +90,7 @@ class VolumePathTracer {
       pos += std::max(0.0, glm::dot(mCentre - pos, dir) - 2 * mRadius) * dir;
     std::uint32_t medium = 0;
     int scatters = 0;
+    double radianceScale = 1;  // the product of the crossings' (n1/n2)^2, for roulette
     bool straightEdge = false, specularSinceScatter = false, firstSurface = true;
     std::vector<LightVertex> targets;
     for (std::uint64_t events = 0;; ++events) {
@@ -114,7 +115,10 @@ class VolumePathTracer {
           specularSinceScatter = false;
           if (!mNextEvent.empty() && orderCounts(s.orders, scatters))
             radiance += nextEventEstimate(pos, dir, medium, w, rng, st);
-          if (!survivesRoulette(w, scatters, rng)) break;
+          if (!survivesRoulette(w, radianceScale, scatters, rng)) {
+            ++st.rouletteTerminations;
+            break;
+          }
           dir = scatterHG(dir, m.g, rng);
           continue;
         }
@@ -132,6 +136,7 @@ class VolumePathTracer {
       firstSurface = false;
       if (c.weight <= 0) break;
       w.scale(glm::dvec3(c.weight));
+      radianceScale *= c.radianceScale;
       specularSinceScatter |= c.specular;
       pos = c.origin, dir = c.direction, medium = c.medium;
     }
@@ -176,9 +181,14 @@ class VolumePathTracer {
       targets[i].weight.scale(glm::dvec3(1.0 / mSettings.lightSubpaths));
   }
 
-  bool survivesRoulette(HeroChannelWeight& w, int scatters, util::Rng& rng) const {
+  /// Roulette on the physical throughput: the weight without the radiance scaling of the
+  /// refractions so far (pbrt-v4's etaScale), which the exit undoes. Read as a loss, the entry's
+  /// (1/1.3)^2 = 0.59 ended 41 % of the paths in a medium of eta 1.3 at their 4th scatter, even
+  /// without absorption.
+  bool survivesRoulette(HeroChannelWeight& w, double radianceScale, int scatters,
+                        util::Rng& rng) const {
     if (scatters <= 3) return true;
-    const double throughput = maxComponent(w.value());
+    const double throughput = maxComponent(w.value()) / radianceScale;
     if (throughput >= 1) return true;
     const double q = std::max(0.05, throughput);
     if (rng.uniform() >= q) return false;
