@@ -26,9 +26,12 @@ def measure(lucent, material, boundary, spp, size, workdir):
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     with open(stats) as f:
         s = json.load(f)
-    seconds = s["figures"]["frame_seconds"]
-    err = s["figures"]["mean_pixel_relative_stderr"]
-    return seconds, err, seconds * (err / 0.01) ** 2
+    f = s["figures"]
+    seconds, err = f["frame_seconds"], f["mean_pixel_relative_stderr"]
+    paths = f["camera_samples"]
+    scatters = f["scatter_events"] / paths
+    ended = f.get("roulette_terminations", float("nan")) / paths  # absent in older builds
+    return seconds, err, seconds * (err / 0.01) ** 2, scatters, ended
 
 
 def table(lucent, spp, size, workdir):
@@ -50,15 +53,17 @@ def main():
     with tempfile.TemporaryDirectory() as workdir:
         results = {name: table(binary, a.spp, a.size, workdir) for name, binary in builds}
     print(f"30 mm spheres, uniform environment, {a.size}x{a.size}, {a.spp} spp")
-    print("| build | material | boundary | s | mean rel. stderr | s to 1 % | fresnel / matched |")
-    print("|---|---|---|---|---|---|---|")
+    print("| build | material | boundary | s | mean rel. stderr | s to 1 % | fresnel / matched "
+          "| scatters / path | roulette ends / path |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for name, rows in results.items():
         for material in ("marble", "skin1"):
             base = rows[(material, "matched")][2]
             for boundary in ("matched", "fresnel"):
-                s, e, t = rows[(material, boundary)]
+                s, e, t, scatters, ended = rows[(material, boundary)]
                 ratio = f"{t / base:.2f}" if boundary == "fresnel" else ""
-                print(f"| {name} | {material} | {boundary} | {s:.2f} | {e:.4f} | {t:.0f} | {ratio} |")
+                print(f"| {name} | {material} | {boundary} | {s:.2f} | {e:.4f} | {t:.0f} | {ratio} "
+                      f"| {scatters:.0f} | {ended:.3f} |")
     if a.baseline:
         for material in ("marble", "skin1"):
             now = results["this build"][(material, "fresnel")][2]

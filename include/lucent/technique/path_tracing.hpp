@@ -130,6 +130,7 @@ class PathTracing final : public Prepared {
     stats.figures["joins"] = double(st.connections);
     stats.figures["guide_radius_mm"] = tracer.guideRadius();
     stats.figures["truncated_paths"] = double(st.truncatedPaths);
+    stats.figures["roulette_terminations"] = double(st.rouletteTerminations);
     stats.figures["leaked_paths"] = double(st.leakedPaths);
     pathTracerWarnings(st, stats);
     return out;
