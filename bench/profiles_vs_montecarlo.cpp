@@ -246,7 +246,25 @@ void plotTotals(const std::string& path, const std::vector<Row>& rows) {
 }
 }  // namespace
 
+/// Every argument is one of the options with a value; anything else is refused before the work.
+bool argumentsKnown(int argc, char** argv) {
+  for (int i = 1; i < argc; i += 2) {
+    const std::string a = argv[i];
+    if ((a != "--photons" && a != "--csv" && a != "--plot") || i + 1 >= argc) {
+      std::fprintf(stderr,
+                   "profiles_vs_montecarlo: unknown or incomplete argument '%s'
+"
+                   "usage: profiles_vs_montecarlo [--photons N] [--csv FILE] [--plot FILE.png]
+",
+                   a.c_str());
+      return false;
+    }
+  }
+  return true;
+}
+
 int main(int argc, char** argv) {
+  if (!argumentsKnown(argc, argv)) return 2;
   const auto photons = std::uint64_t(std::atof(arg(argc, argv, "--photons", "100000")));
   const std::string csv = arg(argc, argv, "--csv", ""), plotPath = arg(argc, argv, "--plot", "");
   if (!plotPath.empty() && !plot::chartsAvailable()) {  // checked before the work, not after
