@@ -252,10 +252,8 @@ bool argumentsKnown(int argc, char** argv) {
     const std::string a = argv[i];
     if ((a != "--photons" && a != "--csv" && a != "--plot") || i + 1 >= argc) {
       std::fprintf(stderr,
-                   "profiles_vs_montecarlo: unknown or incomplete argument '%s'
-"
-                   "usage: profiles_vs_montecarlo [--photons N] [--csv FILE] [--plot FILE.png]
-",
+                   "profiles_vs_montecarlo: unknown or incomplete argument '%s'\n"
+                   "usage: profiles_vs_montecarlo [--photons N] [--csv FILE] [--plot FILE.png]\n",
                    a.c_str());
       return false;
     }
