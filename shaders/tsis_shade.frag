@@ -1,10 +1,13 @@
 //VTK::System::Dec
 //VTK::Output::Dec
+//LUCENT::ProfileForm
 //LUCENT::Optics
 // Stage 3, per pixel (Chang et al. 2008 Eq. 10-11):
 //   L(x_o, w_o) = exitScale Ft(eta, w_o) / pi * sum_i w_i Rd(|x_i - x_o|),
 // Rd from the profile's radial table (the paper's 1-D texture), or in closed form for a pole pair
-// with rd=exact. exitScale is Profile::exitScale (1 / (1 - 2 C1) for the models after the dipole).
+// with rd=exact: the pass compiles one variant each (LUCENT_CLOSED_FORM), since a run-time choice
+// inside the loop made llvmpipe evaluate both. exitScale is Profile::exitScale (1 / (1 - 2 C1) for
+// the models after the dipole).
 in vec3 positionVSOutput;
 in vec3 normalVSOutput;
 uniform sampler2D samplePosition;  // world, w = 1 for a drawn sample
@@ -15,15 +18,14 @@ uniform float mmPerUnit;
 uniform vec3 cameraPosition;
 uniform float eta;
 uniform float exitScale;
-uniform int closedForm;            // 1: the pole pair below; 0: the table
+#if LUCENT_CLOSED_FORM
 uniform LucentDipole dipole;
+vec3 profileRd(float r) { return lucentDipoleRd(dipole, r); }
+#else
 uniform sampler2D profileTable;
 uniform LucentRadialTable profile;
-
-vec3 profileRd(float r)
-{
-  return closedForm != 0 ? lucentDipoleRd(dipole, r) : lucentRadialTableRd(profileTable, profile, r);
-}
+vec3 profileRd(float r) { return lucentRadialTableRd(profileTable, profile, r); }
+#endif
 
 void main()
 {

@@ -147,6 +147,14 @@ std::vector<lt::Inclusion> innerBodiesWithin(const vtkLucentSurface& surface,
   }
   return out;
 }
+/// Stage 3's fragment shader, reading the profile's table or a pole pair's closed form.
+std::string shadeVariant(bool closedForm) {
+  std::string source = withSharedGlsl(lucent::glsl::kTsisShadeFrag);
+  vtkShaderProgram::Substitute(
+      source, "//LUCENT::ProfileForm",
+      closedForm ? "#define LUCENT_CLOSED_FORM 1" : "#define LUCENT_CLOSED_FORM 0");
+  return source;
+}
 }  // namespace
 
 struct vtkLucentPass::Internals {
@@ -160,7 +168,9 @@ struct vtkLucentPass::Internals {
       sampleWeight;
   vtkOpenGLQuadHelper* samplesQuad = nullptr;
   vtkOpenGLQuadHelper* compositeQuad = nullptr;
-  std::string lightDepthVs, lightDepthFs, atlasVs, atlasFs, shadeVs, shadeFs, tauShadeFs;
+  std::string lightDepthVs, lightDepthFs, atlasVs, atlasFs, shadeVs;
+  std::string shadeFs[2];  ///< stage 3 with the profile's table [0], or in closed form [1]
+  std::string tauShadeFs;
   std::map<vtkActor*, vtkSmartPointer<vtkLucentSurface>> surfaces;
   std::map<const vtkLucentSurface*, vtkSmartPointer<vtkLucentTauLut>> tauLuts;    ///< taulut's twin
   std::map<const vtkLucentSurface*, vtkSmartPointer<vtkLucentProfile>> profiles;  ///< tsis's Rd
@@ -176,7 +186,7 @@ struct vtkLucentPass::Internals {
         atlasVs(lucent::glsl::kAtlasIrradianceVert),
         atlasFs(withSharedGlsl(lucent::glsl::kAtlasIrradianceFrag)),
         shadeVs(lucent::glsl::kTsisShadeVert),
-        shadeFs(withSharedGlsl(lucent::glsl::kTsisShadeFrag)),
+        shadeFs{shadeVariant(false), shadeVariant(true)},
         tauShadeFs(withSharedGlsl(lucent::glsl::kTaulutShadeFrag)) {}
 };
 
@@ -541,8 +551,8 @@ bool vtkLucentPass::ShadeSurface(vtkOpenGLRenderWindow* window, vtkLucentSurface
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthFunc(GL_LESS);
   state->vtkglDepthMask(GL_TRUE);
-  vtkShaderProgram* program =
-      window->GetShaderCache()->ReadyShaderProgram(I.shadeVs.c_str(), I.shadeFs.c_str(), "");
+  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
+      I.shadeVs.c_str(), I.shadeFs[I.profiles.at(surface)->IsClosedForm() ? 1 : 0].c_str(), "");
   if (program) {
     I.samplePosition->Activate();
     I.sampleWeight->Activate();
