@@ -92,15 +92,23 @@ TEST_CASE(
   // What stage 3 of the pass evaluates, with the uniforms vtkLucentProfile sets: r from 0 to 1.2
   // rMax (beyond rMax the table is 0).
   constexpr double kDiagonalMm = 40.0;
+  // The pass compiles stage 3 once per form (LUCENT_CLOSED_FORM); the probe does the same.
+  auto shaderOfForm = [&](bool closedForm) {
+    return probeShader("  float r = t == 0.0 ? 0.0 : 1e-5 * pow(1.2 * " +
+                           std::to_string(kDiagonalMm) +
+                           " / 1e-5, t);\n"
+                           "#if LUCENT_CLOSED_FORM\n"
+                           "  vec3 rd = lucentDipoleRd(dipole, r);\n"
+                           "#else\n"
+                           "  vec3 rd = lucentRadialTableRd(profileTable, profile, r);\n"
+                           "#endif\n"
+                           "  gl_FragData[0] = vec4(exitScale * rd, r);\n",
+                       std::string("#define LUCENT_CLOSED_FORM ") + (closedForm ? "1" : "0") +
+                           "\nuniform float exitScale;\nuniform sampler2D profileTable;\n"
+                           "uniform LucentRadialTable profile;\n");
+  };
   lucent_test::QuadProbe probe(kWidth, 1);
-  REQUIRE(probe.program(probeShader(
-      "  float r = t == 0.0 ? 0.0 : 1e-5 * pow(1.2 * " + std::to_string(kDiagonalMm) +
-          " / 1e-5, t);\n"
-          "  vec3 rd = closedForm != 0 ? lucentDipoleRd(dipole, r)\n"
-          "                            : lucentRadialTableRd(profileTable, profile, r);\n"
-          "  gl_FragData[0] = vec4(exitScale * rd, r);\n",
-      "uniform int closedForm;\nuniform float exitScale;\nuniform sampler2D profileTable;\n"
-      "uniform LucentRadialTable profile;\n")));
+  int compiledForm = -1;
   const auto tsis = lt::tsisTechnique();
   int tables = 0, closed = 0;
   for (const auto& model : lo::kProfileModels)
@@ -114,6 +122,10 @@ TEST_CASE(
         const auto exact = lt::detail::profileOf<double>(m, knobs);
         CHECK(gpu->IsClosedForm() == (std::string(rd) == "exact" && exact.isPolePair()));
         CHECK(warning.empty() == (std::string(rd) == "table" || exact.isPolePair()));
+        if (compiledForm != int(gpu->IsClosedForm())) {
+          REQUIRE(probe.program(shaderOfForm(gpu->IsClosedForm())));
+          compiledForm = int(gpu->IsClosedForm());
+        }
         gpu->Activate(probe.shader());
         const std::vector<float> out = probe.draw();
         gpu->Deactivate();

@@ -25,16 +25,15 @@ bool vtkLucentProfile::Update(vtkOpenGLRenderWindow* window, const lo::Material&
                               const lt::KnobValues& knobs, double diagonalMm, std::string& warning,
                               std::string& error) {
   const std::string profile = knobs.text("profile");
-  const bool exact = knobs.text("rd") == "exact";
-  const lo::Profile<double> p = lt::detail::profileOf<double>(material, knobs);
-  const bool closedForm = exact && p.isPolePair();
-  if (exact && !closedForm)
-    warning = "rd=exact: profile " + profile + " has no closed-form kernel; its table is summed";
+  const lt::detail::RdLookup lookup = lt::detail::rdLookupOf(knobs);
+  warning = lookup.warning;
+  const bool closedForm = lookup.closedForm;
   const std::string key = material.name + " " + profile + (closedForm ? " exact" : " table ") +
                           (closedForm ? std::string() : std::to_string(diagonalMm));
   if (key == this->BuiltKey) return true;
   // Until the new state is complete (the table can throw or fail), nothing counts as built.
   this->BuiltKey.clear();
+  const lo::Profile<double> p = lt::detail::profileOf<double>(material, knobs);
   this->ExitScale = float(p.exitScale);
   this->ClosedForm = closedForm;
   if (closedForm) {
@@ -81,7 +80,6 @@ void vtkLucentProfile::Activate(vtkShaderProgram* program) {
   const char* names[6] = {"dipole.sigmaTr",    "dipole.zr",         "dipole.zv",
                           "dipole.alphaPrime", "dipole.fluxWeight", "dipole.fluenceWeight"};
   for (int k = 0; k < 6; ++k) program->SetUniform3f(names[k], this->Dipole[k]);
-  program->SetUniformi("closedForm", this->ClosedForm ? 1 : 0);
   program->SetUniformf("exitScale", this->ExitScale);
   program->SetUniformi("profile.nodes", this->Nodes);
   program->SetUniformi("profile.perRow", this->PerRow);

@@ -59,6 +59,14 @@ struct RingFilter {
     for (int c = 0; c < 3; ++c) t[c] = disc[c] > 0 ? std::clamp(seen[c] / disc[c], 0.0, 1.0) : 0.0;
     return t;
   }
+  /// A tap of stratum k holding `value` = rho f(d) (or rho times any kernel the filter stands for):
+  /// its share of the stratum's mass times value / f(r_k), the ratio estimator (file comment).
+  glm::dvec3 tapEstimate(std::size_t k, double share, const glm::dvec3& value) const {
+    glm::dvec3 e(0);
+    for (int c = 0; c < 3; ++c)
+      if (profileAt[k][c] > 0) e[c] = share * mass[k][c] * value[c] / profileAt[k][c];
+    return e;
+  }
 };
 
 namespace detail {

@@ -140,10 +140,7 @@ class TranslucentShadowMap {
         sum += ring.mass[0] * glm::dvec3(mDensity[i]) * ring.centreTransfer(d);
         return;
       }
-      const glm::dvec3 f = profile(d);
-      for (int c = 0; c < 3; ++c)
-        if (ring.profileAt[k][c] > 0)
-          sum[c] += share * ring.mass[k][c] * double(mDensity[i][c]) * f[c] / ring.profileAt[k][c];
+      sum += ring.tapEstimate(k, share, glm::dvec3(mDensity[i]) * profile(d));
     });
     return sum;
   }

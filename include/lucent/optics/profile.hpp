@@ -67,6 +67,11 @@ inline ProfileModel profileModelNamed(std::string_view name) {
                               names);
 }
 
+/// The two models with a closed-form R(r) (a real and a virtual point source).
+constexpr bool isPolePair(ProfileModel m) {
+  return m == ProfileModel::Dipole || m == ProfileModel::BetterDipole;
+}
+
 /// One channel of a profile.
 template <class T>
 struct ProfileChannel {
@@ -76,9 +81,7 @@ struct ProfileChannel {
   BurleyChannel<T> burley;       ///< Burley, BurleyDiffuse
   T meanFreePathMm = 1;          ///< 1/sigma_t' whatever the model (the spacing the sums resolve)
 
-  bool isPolePair() const {
-    return model == ProfileModel::Dipole || model == ProfileModel::BetterDipole;
-  }
+  bool isPolePair() const { return optics::isPolePair(model); }
   /// f applied to the model's own channel: the one place the model is dispatched on.
   template <class F>
   auto visit(const F& f) const {

@@ -52,6 +52,11 @@ struct Sweep {
 
 using KnobList = std::vector<std::pair<std::string, std::string>>;
 
+/// The model of the physical truth: the radiative transfer equation, every scattering order, the
+/// dielectric boundary. Every technique is measured against it as well as against its own model's
+/// truth.
+inline constexpr const char* kPhysicalModel = "radiative transfer";
+
 struct Technique {
   std::string name;     ///< what --method, the registry and (CamelCase) VTK properties call it
   std::string summary;  ///< one line
@@ -124,6 +129,23 @@ optics::Profile<T> profileOf(const optics::Material& m, const KnobValues& knobs)
   return optics::Profile<T>::make(optics::profileModelNamed(knobs.text("profile")),
                                   optics::Rgb<T>(m.sigmaA), optics::Rgb<T>(m.sigmaSPrime),
                                   T(m.eta));
+}
+
+/// How a frame reads R(r) under the `rd` knob: in closed form where it is asked for and the
+/// profile has one (the pole pairs), else from the profile's radial table, with a warning when
+/// exact was asked for and cannot be served. The CPU tsis and its GPU twin both decide here.
+struct RdLookup {
+  bool closedForm = false;
+  std::string warning;  ///< empty unless rd=exact fell back to the table
+};
+inline RdLookup rdLookupOf(const KnobValues& knobs) {
+  const bool exact = knobs.pick<bool>("rd", {{"table", false}, {"exact", true}});
+  const bool polePair = optics::isPolePair(optics::profileModelNamed(knobs.text("profile")));
+  RdLookup out{exact && polePair, {}};
+  if (exact && !polePair)
+    out.warning = "rd=exact: profile " + knobs.text("profile") +
+                  " has no closed-form kernel; its table is summed";
+  return out;
 }
 }  // namespace detail
 

@@ -178,13 +178,11 @@ class Tsis final : public Prepared {
     atlas::ImportanceSamples samples = drawSamples(mAtlas, scene, mKnobs, stats);
     const auto profile = profileOf<float>(scene.medium.material, mKnobs);
     std::optional<atlas::TsisEvaluator> eval;
-    const bool exact = mKnobs.pick<bool>("rd", {{"table", false}, {"exact", true}});
-    if (exact && profile.isPolePair()) {
+    const RdLookup lookup = rdLookupOf(mKnobs);
+    if (lookup.closedForm) {
       eval.emplace(std::move(samples), profile);
     } else {
-      if (exact)
-        stats.warnings.push_back("rd=exact: profile " + mKnobs.text("profile") +
-                                 " has no closed-form kernel; its table is summed");
+      if (!lookup.warning.empty()) stats.warnings.push_back(lookup.warning);
       const auto table = optics::radialTable(profile, float(scene.mesh.bounds().diagonal()));
       stats.figures["rd_table_nodes"] = double(table.size());
       eval.emplace(std::move(samples), table, profile.eta);

@@ -95,10 +95,7 @@ class TauLutRadiance {
             const std::int32_t in = numbers[texel];
             if (in < 0) return;
             const glm::dvec3 tau = opticalThickness(in, map.position(texel), out, xo);
-            for (int c = 0; c < 3; ++c)
-              if (mFilter.profileAt[k][c] > 0)
-                b[c] += share * mFilter.mass[k][c] * map.density(texel)[c] * std::exp(-tau[c]) /
-                        mFilter.profileAt[k][c];
+            b += mFilter.tapEstimate(k, share, map.density(texel) * glm::exp(-tau));
           },
           turn);
     }
