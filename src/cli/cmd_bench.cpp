@@ -57,26 +57,6 @@ double baselineTimeAtError(std::vector<std::pair<double, double>> errorTime, dou
   return std::nan("");
 }
 
-/// The product of the sweeps, each setting combined with the fixed knobs and validated.
-std::vector<technique::KnobValues> sweepSettings(const technique::Technique& t,
-                                                 const technique::KnobList& fixed,
-                                                 const Sweeps& sweeps) {
-  std::vector<technique::KnobList> combos{fixed};
-  for (const auto& [name, values] : sweeps) {
-    std::vector<technique::KnobList> next;
-    for (const auto& c : combos)
-      for (const auto& v : values) {
-        auto k = c;
-        k.emplace_back(name, v);
-        next.push_back(k);
-      }
-    combos.swap(next);
-  }
-  std::vector<technique::KnobValues> settings;
-  for (const auto& c : combos) settings.push_back(t.values(c));
-  return settings;
-}
-
 Sweeps sweepArgs(const Args& args, const std::string& option) {
   Sweeps out;
   for (const auto& s : args.all(option)) out.push_back(parseSweep(args, s));

@@ -24,9 +24,11 @@ constexpr const char* kUsage =
     "  materials   the measured materials and their derived dipole quantities\n"
     "  compare     error metrics of one image against a reference\n"
     "  bench       accuracy against time: sweep a method's knobs against a reference\n"
-    "  techniques  every technique with its paper, capabilities and knobs (--json)\n";
+    "  techniques  every technique with its paper, capabilities and knobs (--json)\n"
+    "  report      accuracy against time of every technique that fits a scene, as a web page\n";
 
 bool wantsPlot(int argc, char** argv) {
+  if (argc > 1 && std::strcmp(argv[1], "report") == 0) return true;  // its page has a chart
   for (int i = 1; i < argc; ++i)
     if (std::strncmp(argv[i], "--plot", 6) == 0) return true;
   return false;
@@ -72,6 +74,7 @@ int run(int argc, char** argv) {
     if (command == "compare") return lucent::cli::runCompare(argc, argv);
     if (command == "bench") return lucent::cli::runBench(argc, argv);
     if (command == "techniques") return lucent::cli::runTechniques(argc, argv);
+    if (command == "report") return lucent::cli::runReport(argc, argv);
     std::fprintf(stderr, "lucent: unknown command '%s'; run 'lucent --help' for the list\n",
                  command.c_str());
     return 2;

@@ -59,6 +59,25 @@ const technique::Technique& techniqueArg(const technique::Registry& registry, co
   return args.has(option) ? registry.get(args.get(option)) : registry.defaultReference();
 }
 
+std::vector<technique::KnobValues> sweepSettings(const technique::Technique& t,
+                                                 const technique::KnobList& fixed,
+                                                 const std::vector<technique::Sweep>& sweeps) {
+  std::vector<technique::KnobList> combos{fixed};
+  for (const auto& [name, values] : sweeps) {
+    std::vector<technique::KnobList> next;
+    for (const auto& c : combos)
+      for (const auto& v : values) {
+        auto k = c;
+        k.emplace_back(name, v);
+        next.push_back(k);
+      }
+    combos.swap(next);
+  }
+  std::vector<technique::KnobValues> settings;
+  for (const auto& c : combos) settings.push_back(t.values(c));
+  return settings;
+}
+
 void checkOutputKnobs(const technique::KnobValues& knobs) {
   for (const auto& spec : knobs.specs())
     if (spec.kind == technique::KnobKind::OutputFile && !knobs.text(spec.name).empty())

@@ -31,6 +31,11 @@ technique::KnobList knobArgs(const Args& args, const std::string& option);
 const technique::Technique& techniqueArg(const technique::Registry& registry, const Args& args,
                                          const std::string& option);
 
+/// The product of the sweeps, each setting combined with the fixed knobs and validated.
+std::vector<technique::KnobValues> sweepSettings(const technique::Technique& t,
+                                                 const technique::KnobList& fixed,
+                                                 const std::vector<technique::Sweep>& sweeps);
+
 /// The technique's output-file knobs that are set: each must be writable (checked now, before any
 /// work).
 void checkOutputKnobs(const technique::KnobValues& knobs);

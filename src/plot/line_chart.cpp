@@ -30,9 +30,11 @@ bool chartsAvailable() {
   return display && *display;
 }
 
-void writeLineChart(const std::string& path, const ChartSpec& spec, const std::vector<Series>& series) {
+void writeLineChart(const std::string& path, const ChartSpec& spec,
+                    const std::vector<Series>& series) {
   if (!chartsAvailable())
-    throw InputError("cannot draw '" + path + "': VTK charts need an X display; run under 'xvfb-run -a'");
+    throw InputError("cannot draw '" + path +
+                     "': VTK charts need an X display; run under 'xvfb-run -a'");
   io::AtomicFile out(path);
   vtkNew<vtkContextView> view;
   view->GetRenderWindow()->SetOffScreenRendering(1);
@@ -66,7 +68,10 @@ void writeLineChart(const std::string& path, const ChartSpec& spec, const std::v
     plot->SetInputData(table, 0, 1);
     plot->SetColor(s.rgb[0], s.rgb[1], s.rgb[2], 255);
     plot->SetWidth(2.0);
-    if (auto* pts = vtkPlotPoints::SafeDownCast(plot)) pts->SetMarkerSize(8);
+    if (auto* pts = vtkPlotPoints::SafeDownCast(plot)) {
+      pts->SetMarkerSize(8);
+      if (s.marker != Marker::Default) pts->SetMarkerStyle(int(s.marker));  // same order as VTK's
+    }
   }
   view->GetRenderWindow()->Render();
   vtkNew<vtkWindowToImageFilter> grab;

@@ -7,11 +7,15 @@
 
 namespace lucent::plot {
 
+/// Marker shapes of point series (vtkPlotPoints' own).
+enum class Marker { Default, Cross, Plus, Square, Circle, Diamond };
+
 struct Series {
   std::string name;
   std::vector<double> x, y;
   unsigned char rgb[3] = {31, 119, 180};
   bool points = false;  ///< markers instead of a line
+  Marker marker = Marker::Default;
 };
 
 struct ChartSpec {
@@ -21,7 +25,8 @@ struct ChartSpec {
 };
 
 /// Throws InputError if the PNG cannot be written.
-void writeLineChart(const std::string& path, const ChartSpec& spec, const std::vector<Series>& series);
+void writeLineChart(const std::string& path, const ChartSpec& spec,
+                    const std::vector<Series>& series);
 
 /// Whether charts can be drawn in this process (an X display is reachable).
 bool chartsAvailable();

@@ -194,7 +194,7 @@ inline Technique pathtraceTechnique() {
   t.defaultSweep = {{"spp", {"4", "16", "64"}}};
   t.referenceKnobs = {{"spp", "1024"}};
   t.quickKnobs = {{"spp", "4"}};
-  t.model = "radiative transfer";
+  t.model = kPhysicalModel;
   t.validRange =
       "any size and medium: the error is Monte Carlo noise (reported as the standard error); a "
       "point or directional light behind a refracting boundary is reached only by light subpaths, "

@@ -110,6 +110,16 @@ class Registry {
     throw RequestError("no ground-truth technique is registered");
   }
 
+  /// The ground truth of `model` (the technique its techniques converge to), or null when the model
+  /// has none.
+  const Technique* truthOf(const std::string& model) const {
+    for (const auto& t : mAll)
+      if (t.capabilities.groundTruth && t.model == model) return &t;
+    return nullptr;
+  }
+  /// The physical truth (kPhysicalModel), or null when none is registered.
+  const Technique* physicalTruth() const { return truthOf(kPhysicalModel); }
+
   /// Names of the techniques `keep` accepts, comma-separated.
   template <class Keep>
   std::string names(const Keep& keep) const {
