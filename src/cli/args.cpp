@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 #include <sstream>
 
 #include "../util/error.hpp"
@@ -18,7 +19,18 @@ const OptionSpec* Args::find(const std::string& name) const {
 }
 
 void Args::fail(const std::string& message) const {
-  throw InputError("lucent " + mCommand + ": " + message + " (see 'lucent " + mCommand + " --help')");
+  throw InputError("lucent " + mCommand + ": " + message + " (see 'lucent " + mCommand +
+                   " --help')");
+}
+
+bool Args::parseOptionsOnly(int argc, char** argv) {
+  parse(argc, argv, 2);
+  if (helpRequested()) {
+    std::cout << helpText();
+    return false;
+  }
+  if (!positional().empty()) fail("unexpected argument '" + positional().front() + "'");
+  return true;
 }
 
 void Args::parse(int argc, char** argv, int first) {
@@ -90,14 +102,16 @@ std::vector<double> parseList(const std::string& text, const std::string& what) 
   std::stringstream ss(text);
   std::string item;
   while (std::getline(ss, item, ',')) out.push_back(parseNumber(item, what));
-  if (out.empty()) throw InputError(what + ": empty list; write comma-separated numbers, e.g. 0,0.1,1");
+  if (out.empty())
+    throw InputError(what + ": empty list; write comma-separated numbers, e.g. 0,0.1,1");
   return out;
 }
 
 glm::dvec3 parseTriple(const std::string& text, const std::string& what) {
   const std::vector<double> v = parseList(text, what);
   if (v.size() == 1) return glm::dvec3(v[0]);
-  if (v.size() != 3) throw InputError(what + ": '" + text + "' needs 3 comma-separated numbers R,G,B (or X,Y,Z)");
+  if (v.size() != 3)
+    throw InputError(what + ": '" + text + "' needs 3 comma-separated numbers R,G,B (or X,Y,Z)");
   return {v[0], v[1], v[2]};
 }
 
@@ -105,8 +119,8 @@ double Args::number(const std::string& name, double fallback, double lo, double 
   if (!has(name)) return fallback;
   const double v = parseNumber(get(name), "lucent " + mCommand + ": --" + name);
   if (v < lo || v > hi)
-    fail("--" + name + " " + get(name) + " is out of range; use a value in [" + std::to_string(lo) + ", " +
-         std::to_string(hi) + "]");
+    fail("--" + name + " " + get(name) + " is out of range; use a value in [" + std::to_string(lo) +
+         ", " + std::to_string(hi) + "]");
   return v;
 }
 

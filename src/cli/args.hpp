@@ -1,7 +1,7 @@
 #pragma once
 /// @file args.hpp
-/// @brief Command-line options of one subcommand: declared with their help, parsed strictly, with one-line
-/// errors that name the option, the problem and the fix.
+/// @brief Command-line options of one subcommand: declared with their help, parsed strictly, with
+/// one-line errors that name the option, the problem and the fix.
 #include <map>
 #include <optional>
 #include <string>
@@ -12,8 +12,8 @@
 namespace lucent::cli {
 
 struct OptionSpec {
-  std::string name;     ///< without the leading "--"
-  std::string value;    ///< placeholder shown in help ("FILE", "X"); empty for a flag
+  std::string name;   ///< without the leading "--"
+  std::string value;  ///< placeholder shown in help ("FILE", "X"); empty for a flag
   std::string help;
   bool repeatable = false;
 };
@@ -25,6 +25,9 @@ class Args {
   /// Parses argv[first..]; throws InputError on unknown options, missing values, repeats.
   void parse(int argc, char** argv, int first);
   bool helpRequested() const { return mHelp; }
+  /// For a subcommand that takes options only: parses argv[2..], prints the help when asked
+  /// (returns false: the command is done), fails on a positional argument; true: run.
+  bool parseOptionsOnly(int argc, char** argv);
   std::string helpText() const;
 
   bool has(const std::string& name) const { return mValues.count(name) > 0; }
@@ -50,7 +53,8 @@ class Args {
   bool mHelp = false;
 };
 
-/// Strict number parsing: the whole string must be a finite number. Throws InputError naming `what`.
+/// Strict number parsing: the whole string must be a finite number. Throws InputError naming
+/// `what`.
 double parseNumber(const std::string& text, const std::string& what);
 glm::dvec3 parseTriple(const std::string& text, const std::string& what);
 std::vector<double> parseList(const std::string& text, const std::string& what);

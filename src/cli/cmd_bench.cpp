@@ -109,13 +109,7 @@ int runBench(int argc, char** argv) {
             "lucent bench [scene options] [--method NAME --sweep KNOB=V1,V2,...] [--csv FILE] "
             "[--plot FILE.png]",
             specs);
-  args.parse(argc, argv, 2);
-  if (args.helpRequested()) {
-    std::cout << args.helpText();
-    return 0;
-  }
-  if (!args.positional().empty())
-    args.fail("unexpected argument '" + args.positional().front() + "'");
+  if (!args.parseOptionsOnly(argc, argv)) return 0;
   const std::string xAxis = args.get("plot-x", "seconds");
   if (xAxis != "seconds" && xAxis != "samples")
     args.fail("--plot-x must be seconds or samples, not '" + xAxis + "'");

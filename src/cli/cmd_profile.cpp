@@ -168,13 +168,7 @@ int runProfile(int argc, char** argv) {
       "lucent profile --material NAME [--model " + modelNames +
           "|all] [--method profile|pathtrace] [--r R1,R2,... | --rmax X --n N] [--plot FILE.png]",
       specs);
-  args.parse(argc, argv, 2);
-  if (args.helpRequested()) {
-    std::cout << args.helpText();
-    return 0;
-  }
-  if (!args.positional().empty())
-    args.fail("unexpected argument '" + args.positional().front() + "'");
+  if (!args.parseOptionsOnly(argc, argv)) return 0;
   if (args.has("r") && (args.has("rmax") || args.has("n")))
     args.fail("give either --r or --rmax/--n, not both");
   const optics::Material m = materialFromArgs(args, "skin1");

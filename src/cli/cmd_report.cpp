@@ -4,6 +4,7 @@
 /// front of error against time, a table per setting, the images and their error maps. Results are
 /// cached per setting in DIR/cache, so a run cut short resumes. It names no technique: the list,
 /// the sweeps and the truths come from the registry.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -284,7 +285,7 @@ rp::PageRow pageRow(const Options& o, const rp::ResultCache& cache, const Measur
 }
 
 /// Error against time, every technique, both truths (circles: physical, crosses: model), and the
-/// two Pareto fronts as lines.
+/// two Pareto fronts (marked by markFronts) as lines.
 void writeParetoPlot(const std::string& path, const std::vector<rp::PageRow>& rows,
                      const std::string& title) {
   static const unsigned char palette[10][3] = {
@@ -303,18 +304,21 @@ void writeParetoPlot(const std::string& path, const std::vector<rp::PageRow>& ro
   }
   plot::Series physicalFront{"front, physical truth", {}, {}, {0, 0, 0}, false};
   plot::Series modelFront{"front, model truths", {}, {}, {150, 150, 150}, false};
-  std::vector<lt::CostPoint> model, physical;
+  std::vector<std::size_t> byTime(rows.size());  // the fronts as markFronts found them, in time
+  for (std::size_t i = 0; i < rows.size(); ++i) byTime[i] = i;
+  std::sort(byTime.begin(), byTime.end(),
+            [&](std::size_t a, std::size_t b) { return rows[a].seconds < rows[b].seconds; });
   for (const auto& r : rows) {
     const std::size_t k = seriesOf[r.technique];
     series[k].x.push_back(r.seconds), series[k].y.push_back(r.physicalError);
     series[k + 1].x.push_back(r.seconds), series[k + 1].y.push_back(r.modelError);
-    model.push_back({r.seconds, r.modelError});
-    physical.push_back({r.seconds, r.physicalError});
   }
-  for (std::size_t i : lt::paretoFront(physical))
-    physicalFront.x.push_back(rows[i].seconds), physicalFront.y.push_back(rows[i].physicalError);
-  for (std::size_t i : lt::paretoFront(model))
-    modelFront.x.push_back(rows[i].seconds), modelFront.y.push_back(rows[i].modelError);
+  for (std::size_t i : byTime) {
+    const auto& r = rows[i];
+    if (r.onPhysicalFront)
+      physicalFront.x.push_back(r.seconds), physicalFront.y.push_back(r.physicalError);
+    if (r.onModelFront) modelFront.x.push_back(r.seconds), modelFront.y.push_back(r.modelError);
+  }
   series.push_back(physicalFront);
   series.push_back(modelFront);
   plot::ChartSpec spec;
@@ -359,13 +363,7 @@ int runReport(int argc, char** argv) {
   const lt::Registry& registry = lt::appRegistry();
   Args args("report", "lucent report [scene options] --out DIR [--truth both|physical|model]",
             reportOptionSpecs());
-  args.parse(argc, argv, 2);
-  if (args.helpRequested()) {
-    std::cout << args.helpText();
-    return 0;
-  }
-  if (!args.positional().empty())
-    args.fail("unexpected argument '" + args.positional().front() + "'");
+  if (!args.parseOptionsOnly(argc, argv)) return 0;
   const Options o = optionsOf(args);
   for (const lt::Technique& t : registry.all())  // every --truth-knob is checked before any work
     if (t.capabilities.groundTruth) truthKnobs(registry, t, args);

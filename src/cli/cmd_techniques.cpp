@@ -111,13 +111,7 @@ int runTechniques(int argc, char** argv) {
   Args args("techniques", "lucent techniques [--json]",
             {{"json", "",
               "print the registry as JSON (what front ends and the ParaView XML generator read)"}});
-  args.parse(argc, argv, 2);
-  if (args.helpRequested()) {
-    std::cout << args.helpText();
-    return 0;
-  }
-  if (!args.positional().empty())
-    args.fail("unexpected argument '" + args.positional().front() + "'");
+  if (!args.parseOptionsOnly(argc, argv)) return 0;
   const auto& all = technique::appRegistry().all();
   if (args.has("json")) {
     std::vector<std::string> items;
