@@ -4,6 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
+scripts/lib/apt-install-missing.sh chromium   # the report page's browser test (tests/report/)
 scripts/build.sh
 (cd build && ctest --output-on-failure -j"$(nproc)")
 scripts/sanitize.sh      # the unit and integration tests under ASan + UBSan

@@ -2,12 +2,17 @@
 /// and a JSON stats file.
 #include <cstdio>
 #include <iostream>
+#include <tuple>
 
+#include <lucent/plan/explain.hpp>
 #include "../io/atomic_file.hpp"
+
 #include "../technique/techniques.hpp"
+#include "../util/error.hpp"
 #include "commands.hpp"
 #include "image_output.hpp"
 #include "json_writer.hpp"
+#include "plan_setup.hpp"
 #include "process_stats.hpp"
 #include "technique_run.hpp"
 
@@ -56,14 +61,32 @@ std::string statsJson(const Scene& scene, const technique::Technique& t,
       .raw("warnings", jsonStrings(run.stats.warnings));
   return stats.str() + "\n";
 }
+/// The planner's technique and knobs for the scene (render --method auto).
+std::pair<const technique::Technique*, technique::KnobValues> plannedTechnique(
+    const Args& args, const Scene& scene, const plan::Budget& budget) {
+  const plan::Plan p = planScene(args, scene, technique::pixelRequest(scene.camera, scene), budget);
+  enforceHardLimit(p, budget);
+  if (!p.choice)
+    throw InputError(
+        "lucent render: --method auto: no calibrated technique can serve this scene (lucent plan "
+        "--explain says why); name a method");
+  std::fprintf(stderr, "lucent render: auto: %s%s\n", plan::candidateLine(*p.choice).c_str(),
+               p.meetsBudget ? "" : " (the closest: no setting meets the budget)");
+  for (const auto& o : p.outsideCalibration)
+    std::fprintf(stderr, "lucent render: warning: outside the planner's calibration data: %s\n",
+                 o.c_str());
+  return {p.choice->technique, p.choice->technique->values(plan::knobPairs(p.choice->knobs))};
+}
 }  // namespace
 
 int runRender(int argc, char** argv) {
   const technique::Registry& registry = technique::appRegistry();
   std::vector<OptionSpec> specs = sceneOptionSpecs();
   for (auto& s : toneMapOptionSpecs()) specs.push_back(s);
-  specs.push_back(
-      {"method", "NAME", "rendering technique (default " + registry.defaultReference().name + ")"});
+  specs.push_back({"method", "NAME|auto",
+                   "rendering technique (default " + registry.defaultReference().name +
+                       "); auto: the planner's choice for the scene and budget (lucent plan)"});
+  for (auto& s : planOptionSpecs()) specs.push_back(s);
   specs.push_back({"knob", "NAME=VALUE", "set one of the method's knobs", true});
   specs.push_back({"out", "FILE",
                    "output image: .exr (linear radiance, alpha = coverage) or .png (tone-mapped)",
@@ -88,14 +111,24 @@ int runRender(int argc, char** argv) {
   for (const auto& o : outputs)
     if (!isExr(o) && !isPng(o)) args.fail("--out '" + o + "': use a .exr or .png file name");
 
-  const technique::Technique& technique = techniqueArg(registry, args, "method");
-  const technique::KnobValues knobs = technique.values(knobArgs(args, "knob"));
+  const bool automatic = args.get("method") == "auto";
+  const plan::Budget budget = budgetOf(args);
+  if (!automatic && (budget.given() || args.has("calibration")))
+    args.fail("--budget-ms, --max-error and --calibration go with --method auto");
+  if (automatic && args.has("knob"))
+    args.fail("--method auto chooses the knobs: drop --knob, or name a method");
+  const technique::Technique* chosen =
+      automatic ? nullptr : &techniqueArg(registry, args, "method");
+  technique::KnobValues knobs =
+      automatic ? technique::KnobValues() : chosen->values(knobArgs(args, "knob"));
   // Every output is checked before any work: nothing is written unless everything can be.
   for (const auto& o : outputs) io::checkWritable(o);
   if (args.has("stats")) io::checkWritable(args.get("stats"));
   checkOutputKnobs(knobs);
 
   Scene scene = buildScene(args);
+  if (automatic) std::tie(chosen, knobs) = plannedTechnique(args, scene, budget);
+  const technique::Technique& technique = *chosen;
   const ImageRun run = renderImage(registry, technique, scene, knobs, !args.has("quiet"));
   for (const auto& note : run.stats.warnings)
     std::fprintf(stderr, "lucent render: warning: %s\n", note.c_str());

@@ -118,10 +118,18 @@ lt::KnobValues truthKnobs(const lt::Registry& registry, const lt::Technique& tru
 
 /// The settings of every technique that fits the scene; those that do not, with the reason.
 std::vector<Job> settingsToRun(const lt::Registry& registry, const Scene& scene,
-                               const lt::ShadeRequest& request, bool quick,
+                               const lt::ShadeRequest& request, const Options& o,
                                std::vector<rp::PageNote>& notRun) {
   std::vector<Job> jobs;
   for (const lt::Technique& t : registry.all()) {
+    if (!o.physical && !registry.truthOf(t.model)) {  // nothing to measure it against
+      notRun.push_back({t.name, "",
+                        "its model (" + t.model +
+                            ") has no truth of its own; --truth both measures it "
+                            "against the physical truth"});
+      continue;
+    }
+    const bool quick = o.quick;
     const std::vector<lt::KnobValues> settings =
         quick || t.defaultSweep.empty() ? std::vector<lt::KnobValues>{t.values(t.quickKnobs)}
                                         : sweepSettings(t, {}, t.defaultSweep);
@@ -319,8 +327,8 @@ void writeParetoPlot(const std::string& path, const std::vector<rp::PageRow>& ro
       physicalFront.x.push_back(r.seconds), physicalFront.y.push_back(r.physicalError);
     if (r.onModelFront) modelFront.x.push_back(r.seconds), modelFront.y.push_back(r.modelError);
   }
-  series.push_back(physicalFront);
-  series.push_back(modelFront);
+  for (auto* front : {&physicalFront, &modelFront})  // a line needs two points
+    if (front->x.size() >= 2) series.push_back(*front);
   plot::ChartSpec spec;
   spec.title = title;
   spec.xLabel = "wall time, prepare + one frame (s)";
@@ -373,7 +381,7 @@ int runReport(int argc, char** argv) {
   const lt::ShadeRequest request = lt::pixelRequest(scene.camera, scene);
 
   rp::ReportPage page;
-  const std::vector<Job> jobs = settingsToRun(registry, scene, request, o.quick, page.notRun);
+  const std::vector<Job> jobs = settingsToRun(registry, scene, request, o, page.notRun);
   Runner runner(registry, scene, o, cache);
   const Truths truths = measureTruths(registry, args, o, jobs, runner, page.notRun);
   std::vector<Measured> measured;

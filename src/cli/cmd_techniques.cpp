@@ -59,7 +59,9 @@ std::string techniqueJson(const technique::Technique& t) {
   for (const auto& k : t.capabilities.gpuTwinKnobs)
     twin.push_back(JsonObject().add("knob", k.knob).add("max", k.max).str());
   caps.raw("gpu_twin_knobs", jsonArray(twin));
-  caps.add("gpu_twin", t.capabilities.gpuTwin)
+  caps.add("multiple_scattering_reach",
+           technique::reachName(t.capabilities.multipleScatteringReach))
+      .add("gpu_twin", t.capabilities.gpuTwin)
       .add("precompute_scaling", t.capabilities.precomputeScaling)
       .add("frame_scaling", t.capabilities.frameScaling);
   std::vector<std::string> knobs, sweep;
@@ -92,6 +94,9 @@ std::string techniqueText(const technique::Technique& t) {
   s += "\n  cannot:";
   for (const auto& [name, value] : flags(t.capabilities))
     if (!value) s += std::string(" ") + name;
+  if (t.capabilities.multipleScattering)
+    s += std::string("\n  multiple scattering reach: ") +
+         technique::reachName(t.capabilities.multipleScatteringReach);
   if (!t.capabilities.gpuTwin.empty()) s += "\n  GPU twin: " + t.capabilities.gpuTwin;
   s += "\n  prepare: " + t.capabilities.precomputeScaling +
        "; frame: " + t.capabilities.frameScaling + "\n";

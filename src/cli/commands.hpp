@@ -10,6 +10,7 @@ int runCompare(int argc, char** argv);
 int runBench(int argc, char** argv);
 int runTechniques(int argc, char** argv);
 int runReport(int argc, char** argv);
+int runPlan(int argc, char** argv);
 
 /// The whole CLI: dispatches to a subcommand, turns bad input into one line and exit code 2.
 int run(int argc, char** argv);

@@ -25,7 +25,8 @@ constexpr const char* kUsage =
     "  compare     error metrics of one image against a reference\n"
     "  bench       accuracy against time: sweep a method's knobs against a reference\n"
     "  techniques  every technique with its paper, capabilities and knobs (--json)\n"
-    "  report      accuracy against time of every technique that fits a scene, as a web page\n";
+    "  report      accuracy against time of every technique that fits a scene, as a web page\n"
+    "  plan        the terms a scene calls for and the technique and knobs within a budget\n";
 
 bool wantsPlot(int argc, char** argv) {
   if (argc > 1 && std::strcmp(argv[1], "report") == 0) return true;  // its page has a chart
@@ -75,6 +76,7 @@ int run(int argc, char** argv) {
     if (command == "bench") return lucent::cli::runBench(argc, argv);
     if (command == "techniques") return lucent::cli::runTechniques(argc, argv);
     if (command == "report") return lucent::cli::runReport(argc, argv);
+    if (command == "plan") return lucent::cli::runPlan(argc, argv);
     std::fprintf(stderr, "lucent: unknown command '%s'; run 'lucent --help' for the list\n",
                  command.c_str());
     return 2;

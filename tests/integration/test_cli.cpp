@@ -16,33 +16,16 @@
 #include <lucent/scene/mesh_check.hpp>
 #include <lucent/scene/shapes.hpp>
 
+#include "cli_run.hpp"
 #include "io/exr_io.hpp"
 #include "io/mesh_io.hpp"
 #include "temp_dir.hpp"
 
 namespace {
-struct Run {
-  int code = -1;
-  std::string out, err;
-};
-
+using lucent::test::contains;
+using lucent::test::lucentCli;
+using lucent::test::Run;
 using lucent::test::slurp;
-
-Run lucentCli(const std::string& args, const lucent::test::TempDir& dir) {
-  const std::string out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string cmd =
-      std::string(LUCENT_EXE) + " " + args + " >" + out + " 2>" + err + " </dev/null";
-  const int status = std::system(cmd.c_str());
-  Run r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
-
-bool contains(const std::string& s, const std::string& part) {
-  return s.find(part) != std::string::npos;
-}
 
 /// The numeric rows of a CSV the CLI printed, after checking its header; every row must have
 /// `columns` numbers.

@@ -68,7 +68,7 @@ TEST_CASE(
     "knobs") {
   Registry r;
   addCoreTechniques(r);
-  CHECK(r.all().size() == 8);
+  CHECK(r.all().size() == 9);
   for (const auto& t : r.all()) {
     INFO(t.name);
     CHECK_FALSE(t.summary.empty());

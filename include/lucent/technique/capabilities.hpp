@@ -9,6 +9,16 @@
 
 namespace lucent::technique {
 
+/// How far a technique's multiple scattering carries light across the surface: not at all (a
+/// diffuse BRDF: right when Rd's reach is below a pixel), within the neighbourhood of the lit side
+/// that a light-space map sees (local: no light crosses to a face the light does not see), or
+/// everywhere (global).
+enum class Reach { Point, Local, Global };
+
+inline const char* reachName(Reach r) {
+  return r == Reach::Point ? "point" : r == Reach::Local ? "local" : "global";
+}
+
 /// A knob a GPU twin shares with its technique: same name, default and lower bound; `max` is the
 /// twin's own upper bound where the hardware needs a lower one (a per-pixel loop, a texture's
 /// size).
@@ -30,6 +40,7 @@ struct Capabilities {
   ///@{ Scattering orders it simulates.
   bool singleScattering = false;
   bool multipleScattering = true;
+  Reach multipleScatteringReach = Reach::Global;
   ///@}
   ///@{ What a frame can change without a new prepare.
   bool dynamicLight = true;

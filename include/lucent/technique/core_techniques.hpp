@@ -3,6 +3,7 @@
 /// @brief The header-only techniques (STL + GLM, services through SceneDescription). Adding one is
 /// one file and one line here; techniques that need a heavy library register from their adapter in
 /// src/.
+#include "diffuse_brdf.hpp"
 #include "dipole_sum.hpp"
 #include "optical_thickness.hpp"
 #include "path_tracing.hpp"
@@ -18,6 +19,7 @@ inline void addCoreTechniques(Registry& registry) {
   registry.add(tsisTechnique());
   registry.add(hybridTechnique());
   registry.add(tsmTechnique());
+  registry.add(diffuseBrdfTechnique());
   registry.add(taulutTechnique());
   registry.add(voxelSingleTechnique());
   registry.add(pathtraceTechnique());

@@ -363,6 +363,7 @@ inline Technique tsmTechnique() {
   t.knobs = detail::concat(detail::ringKnobs(), detail::evaluationKnobs());
   t.capabilities = detail::textureSpaceCapabilities();
   t.capabilities.environmentLights = false;
+  t.capabilities.multipleScatteringReach = Reach::Local;
   t.capabilities.precomputeScaling = "none";
   t.capabilities.frameScaling = "O(lights x map texels + points x L x C)";
   t.defaultSweep = {{"rings", {"5", "10", "20", "40"}}};

@@ -1,0 +1,251 @@
+#pragma once
+/// @file planner.hpp
+/// @brief The effect planner: from a scene's features, the calibration measurements and a budget
+/// (time, target error, or both), the terms to simulate (terms.hpp) and the technique and knobs
+/// that serve them, with the predicted time and error and one line of reason per decision. It
+/// reads techniques, knobs and capabilities from the registry and numbers from the calibration
+/// files; it names no technique.
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "../technique/registry.hpp"
+#include "calibration.hpp"
+#include "prediction.hpp"
+#include "terms.hpp"
+
+namespace lucent::plan {
+
+struct Budget {
+  double seconds = INFINITY;  ///< prepare + one frame
+  double error = NAN;         ///< relative RMS against the physical truth; NaN: none given
+  bool hard = false;          ///< a limit no plan may break (the CLI exits 2)
+  bool given() const { return std::isfinite(seconds) || !std::isnan(error); }
+};
+
+/// The target error when the user gives only a time or nothing: where a term is worth simulating.
+/// 5 % relative RMS is about the smallest difference a viewer sees side by side in a tone-mapped
+/// image (the papers' RMSE figures sit between 0.01 and 0.05).
+inline constexpr double kDefaultTargetError = 0.05;
+
+/// One technique setting, predicted on the scene.
+struct Candidate {
+  const technique::Technique* technique = nullptr;
+  std::string knobs;  ///< as stored: changed knobs, "a=1;b=2" or "defaults"
+  double seconds = NAN, frameSeconds = NAN;
+  double modelError = NAN;  ///< against its model's truth
+  double floor = NAN;       ///< its model's own error against the physical truth
+  double error = NAN;       ///< against the physical truth: sqrt(modelError^2 + floor^2)
+  Neighbours errorFrom, floorFrom;
+  TimeModel time;
+  std::size_t scenesMeasured = 0;
+  bool meets = false;
+};
+
+/// Why a technique (with `knobs`, or at all when null) cannot run on the scene; "" when it can.
+using Fit = std::function<std::string(const technique::Technique&, const technique::KnobValues*)>;
+
+struct Plan {
+  SceneFeatures features;
+  TermPlan terms;
+  double targetError = kDefaultTargetError;
+  std::vector<Candidate> candidates;
+  std::optional<Candidate> choice;
+  bool meetsBudget = false;
+  /// When every model's floor lies above the target error: the target the choice was held to
+  /// instead (hypot(target, least floor)); NaN otherwise.
+  double floorLimitedTarget = NAN;
+  std::vector<std::string> excluded;            ///< "technique: why"
+  std::vector<std::string> outsideCalibration;  ///< features outside what was measured
+};
+
+namespace detail {
+
+inline bool reaches(technique::Reach has, technique::Reach needs) { return int(has) >= int(needs); }
+
+/// Why the technique cannot serve the terms, or the scene as `fit` says ("" when it can).
+inline std::string unfit(const technique::Technique& t, const Fit& fit, const TermPlan& terms) {
+  const std::string why = fit(t, nullptr);
+  if (!why.empty()) return why;
+  if (!t.capabilities.multipleScattering && terms.lit)
+    return "it simulates no multiple scattering, the dominant term";
+  if (!reaches(t.capabilities.multipleScatteringReach, terms.reach))
+    return std::string("its multiple scattering is ") +
+           technique::reachName(t.capabilities.multipleScatteringReach) + "; the scene needs " +
+           technique::reachName(terms.reach) + " transport";
+  return "";
+}
+
+/// The error floor of a technique's model on the scene: measured where the model was measured,
+/// else at least the single scattering it leaves out.
+inline void predictFloor(const SceneFeatures& f, const Calibration& c, const TermPlan& terms,
+                         Candidate& cand) {
+  const technique::Technique& t = *cand.technique;
+  if (t.model == technique::kPhysicalModel) {
+    cand.floor = 0;
+    return;
+  }
+  std::vector<const ModelFloor*> rows;
+  for (const auto& r : c.floors)
+    if (r.model == t.model) rows.push_back(&r);
+  cand.floorFrom = predictFromNeighbours(f, rows, [](const ModelFloor& r) { return r.error; });
+  cand.floor = !std::isnan(cand.floorFrom.value) ? cand.floorFrom.value
+               : (!t.capabilities.singleScattering && !std::isnan(terms.singleShare))
+                   ? terms.singleShare
+                   : 0;
+}
+
+/// Every calibrated setting of `t` valid on the scene, predicted.
+inline std::vector<Candidate> settingsOf(const technique::Technique& t, const SceneFeatures& f,
+                                         const Fit& fit, const Calibration& c,
+                                         const TermPlan& terms) {
+  std::map<std::string, std::vector<const SettingMeasurement*>> byKnobs;
+  for (const auto& m : c.settings)
+    if (m.technique == t.name) byKnobs[m.knobs].push_back(&m);
+  std::vector<Candidate> out;
+  for (const auto& [knobs, rows] : byKnobs) {
+    try {
+      const technique::KnobValues values = t.values(knobPairs(knobs));
+      if (!fit(t, &values).empty()) continue;  // a setting the scene rules out
+    } catch (const std::exception&) {
+      continue;  // a knob or value this build no longer has
+    }
+    Candidate cand;
+    cand.technique = &t, cand.knobs = knobs, cand.scenesMeasured = rows.size();
+    cand.time = fitTimeModel(rows, [](const SettingMeasurement& m) { return m.seconds; });
+    cand.seconds = cand.time(f);
+    cand.frameSeconds =
+        fitTimeModel(rows, [](const SettingMeasurement& m) { return m.frameSeconds; })(f);
+    cand.errorFrom =
+        predictFromNeighbours(f, rows, [](const SettingMeasurement& m) { return m.modelError; });
+    cand.modelError = cand.errorFrom.value;
+    predictFloor(f, c, terms, cand);
+    cand.error = std::hypot(cand.modelError, cand.floor);
+    out.push_back(std::move(cand));
+  }
+  return out;
+}
+
+/// The features of the scene that lie outside the span of the calibration scenes (by more than a
+/// tenth of the similarity scale), each as "name value (measured lo..hi)".
+inline std::vector<std::string> outsideOf(const SceneFeatures& f, const Calibration& c) {
+  std::vector<std::string> out;
+  if (c.settings.empty()) return out;
+  const auto x = similarityCoordinates(f);
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const auto& m : c.settings) {
+      const double v = similarityCoordinates(m.features)[k];
+      lo = std::min(lo, v), hi = std::max(hi, v);
+    }
+    const double margin = 0.1 * kSimilarityScale[k];
+    if (x[k] < lo - margin || x[k] > hi + margin)
+      out.push_back(std::string(kSimilarityNames[k]) + " " + technique::numberText(x[k]) +
+                    (isLogCoordinate(k) ? " (log10)" : "") + ", measured " +
+                    technique::numberText(lo) + " to " + technique::numberText(hi));
+  }
+  return out;
+}
+
+/// The candidate `better` prefers among those within both limits (null: none).
+template <class Better>
+const Candidate* bestWithin(std::vector<Candidate>& candidates, double seconds, double error,
+                            const Better& better) {
+  const Candidate* best = nullptr;
+  for (Candidate& c : candidates) {
+    c.meets = c.seconds <= seconds && !(c.error > error);
+    if (c.meets && (!best || better(c, *best))) best = &c;
+  }
+  return best;
+}
+
+/// Picks among the candidates: with a target error, the fastest that meets both limits; with only
+/// a time, the most accurate within it. When no setting reaches the target error because every
+/// model's own error (its floor) lies above it, the target is what the best model allows,
+/// hypot(target, least floor): paying for accuracy below the model's error buys nothing. None
+/// meeting the time: the fastest.
+inline void choose(const Budget& budget, Plan& plan) {
+  const auto faster = [](const Candidate& a, const Candidate& b) { return a.seconds < b.seconds; };
+  const auto moreAccurate = [](const Candidate& a, const Candidate& b) {
+    return a.error < b.error;
+  };
+  const bool errorAsked = !std::isnan(budget.error);
+  const double target = errorAsked ? budget.error : INFINITY;
+  const Candidate* best = errorAsked
+                              ? bestWithin(plan.candidates, budget.seconds, target, faster)
+                              : bestWithin(plan.candidates, budget.seconds, target, moreAccurate);
+  plan.meetsBudget = best != nullptr;
+  if (!best && errorAsked) {
+    double leastFloor = INFINITY;
+    for (const Candidate& c : plan.candidates) leastFloor = std::min(leastFloor, c.floor);
+    if (leastFloor > target) {
+      plan.floorLimitedTarget = std::hypot(target, leastFloor);
+      best = bestWithin(plan.candidates, budget.seconds, plan.floorLimitedTarget, faster);
+      if (!best)  // nor in time: the fastest near the floor
+        best = bestWithin(plan.candidates, INFINITY, plan.floorLimitedTarget, faster);
+    }
+  }
+  if (!best) best = bestWithin(plan.candidates, INFINITY, INFINITY, faster);
+  for (Candidate& c : plan.candidates)  // `meets` says: within the user's own limits
+    c.meets = c.seconds <= budget.seconds && !(c.error > target);
+  if (best) plan.choice = *best;
+}
+
+}  // namespace detail
+
+/// The plan for a scene with these features; `fit` says where a technique or setting cannot run.
+inline Plan makePlan(const technique::Registry& registry, const SceneFeatures& features,
+                     const Calibration& calibration, const Budget& budget, const Fit& fit) {
+  Plan plan;
+  plan.features = features;
+  plan.targetError = std::isnan(budget.error) ? kDefaultTargetError : budget.error;
+  Budget limits = budget;  // no limit at all: the fastest setting within the default target
+  if (!budget.given()) limits.error = kDefaultTargetError;
+  plan.terms = decideTerms(features, calibration, plan.targetError);
+  plan.outsideCalibration = detail::outsideOf(features, calibration);
+  for (const technique::Technique& t : registry.all()) {
+    const std::string why = detail::unfit(t, fit, plan.terms);
+    if (!why.empty()) {
+      plan.excluded.push_back(t.name + ": " + why);
+      continue;
+    }
+    std::vector<Candidate> settings = detail::settingsOf(t, features, fit, calibration, plan.terms);
+    if (settings.empty())
+      plan.excluded.push_back(t.name + ": no calibrated setting valid here (" + kRecalibrate + ")");
+    for (auto& s : settings) plan.candidates.push_back(std::move(s));
+  }
+  detail::choose(limits, plan);
+  if (!budget.given()) plan.meetsBudget = plan.choice.has_value();  // the default is no limit
+  return plan;
+}
+
+/// Where the registry's capability and range checks let a technique (and its knobs) run on a
+/// scene shaded at `request`.
+inline Fit sceneFit(const technique::Registry& registry, const technique::SceneDescription& scene,
+                    const technique::ShadeRequest& request) {
+  return [&registry, &scene, &request](const technique::Technique& t,
+                                       const technique::KnobValues* knobs) -> std::string {
+    try {
+      if (knobs)
+        registry.checkRange(t, scene, *knobs);
+      else
+        registry.check(t, scene, request);
+    } catch (const technique::RequestError& e) {
+      return e.what();
+    }
+    return "";
+  };
+}
+
+/// The plan for a scene shaded at `request`.
+inline Plan makePlan(const technique::Registry& registry, const technique::SceneDescription& scene,
+                     const technique::ShadeRequest& request, const SceneFeatures& features,
+                     const Calibration& calibration, const Budget& budget) {
+  return makePlan(registry, features, calibration, budget, sceneFit(registry, scene, request));
+}
+
+}  // namespace lucent::plan
