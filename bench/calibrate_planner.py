@@ -63,6 +63,7 @@ SUITE = {
     "sphere-marble-30-front-96px": ["--width", "96", "--height", "96", "--shape", "sphere",
                                     "--material", "marble", "--light", FRONT],
     "twirl-skin1-30-backlit-96px": ["--width", "96", "--height", "96", "--shape", "twirl"],
+    "genus7-skin1-30-backlit-192px": ["--width", "192", "--height", "192"],
     "cube-cavity-apple-20-backlit-96px": ["--width", "96", "--height", "96", "--shape", "cube-cavity",
                                           "--size-mm", "20", "--material", "apple"],
     "torus-marble-10-backlit-24px": ["--width", "24", "--height", "24", "--shape", "torus",

@@ -159,7 +159,7 @@ TEST_CASE("A capability mismatch exits 2 before any work, naming the techniques 
   const std::vector<Case> cases = {
       {{"--method", "hybrid", "--light", "env:uniform"},
        "cannot take an environment light; techniques that can: reference, jensen-buhler, tsis, "
-       "pathtrace",
+       "diffuse-brdf, pathtrace",
        "hybrid,"},
       {{"--method", "tsm", "--light", "env:uniform"}, "cannot take an environment light", "tsm,"},
       {{"--method", "test-constant", "--light", "env:uniform"},

@@ -65,13 +65,14 @@ inline std::vector<std::string> explain(const Plan& plan, const Budget& budget,
       (!std::isnan(budget.error) ? "error " + numberText(budget.error) : "") +
       (budget.given() ? "" : "none; the default target error " + numberText(plan.targetError));
   out.push_back("budget: " + limits);
-  if (!std::isnan(plan.floorLimitedTarget))
-    out.push_back("floor: no setting reaches error " + numberText(plan.targetError) +
-                  ": every model's own error against the physical truth lies above it here, so "
-                  "the choice is held to " +
-                  numberText(plan.floorLimitedTarget) +
-                  " (the target combined with the least floor); more accuracy within the model "
-                  "would not show");
+  if (!std::isnan(plan.achievableTarget))
+    out.push_back("reachable: no setting is predicted within error " +
+                  numberText(plan.targetError) +
+                  " here (the models' own error against the physical truth, or the truth's noise, "
+                  "lies above it), so the choice is held to " +
+                  numberText(plan.achievableTarget) +
+                  ", the target combined with the least error predicted; accuracy no setting "
+                  "shows is not paid for");
   if (!plan.choice) {
     out.push_back("choice: none: no technique is calibrated and able to serve this scene");
   } else {

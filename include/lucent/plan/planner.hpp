@@ -56,9 +56,9 @@ struct Plan {
   std::vector<Candidate> candidates;
   std::optional<Candidate> choice;
   bool meetsBudget = false;
-  /// When every model's floor lies above the target error: the target the choice was held to
-  /// instead (hypot(target, least floor)); NaN otherwise.
-  double floorLimitedTarget = NAN;
+  /// When no setting reaches the target error: the target the choice was held to instead,
+  /// hypot(target, the least predicted error); NaN otherwise.
+  double achievableTarget = NAN;
   std::vector<std::string> excluded;            ///< "technique: why"
   std::vector<std::string> outsideCalibration;  ///< features outside what was measured
 };
@@ -148,6 +148,19 @@ inline std::vector<std::string> outsideOf(const SceneFeatures& f, const Calibrat
                     (isLogCoordinate(k) ? " (log10)" : "") + ", measured " +
                     technique::numberText(lo) + " to " + technique::numberText(hi));
   }
+  const auto d = costDrivers(f);  // times extrapolated past a factor 2 in a count
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    if (!isCountDriver(k)) continue;
+    double lo = INFINITY, hi = -INFINITY;
+    for (const auto& m : c.settings) {
+      const double v = costDrivers(m.features)[k];
+      lo = std::min(lo, v), hi = std::max(hi, v);
+    }
+    if (d[k] < lo - std::log(2.0) || d[k] > hi + std::log(2.0))
+      out.push_back(std::string(kCostDriverNames[k]) + " " + technique::numberText(std::exp(d[k])) +
+                    ", measured " + technique::numberText(std::exp(lo)) + " to " +
+                    technique::numberText(std::exp(hi)) + " (times extrapolated)");
+  }
   return out;
 }
 
@@ -164,10 +177,10 @@ const Candidate* bestWithin(std::vector<Candidate>& candidates, double seconds, 
 }
 
 /// Picks among the candidates: with a target error, the fastest that meets both limits; with only
-/// a time, the most accurate within it. When no setting reaches the target error because every
-/// model's own error (its floor) lies above it, the target is what the best model allows,
-/// hypot(target, least floor): paying for accuracy below the model's error buys nothing. None
-/// meeting the time: the fastest.
+/// a time, the most accurate within it. When no setting reaches the target error (the model's own
+/// error, or a truth's noise, lies above it), the target is what the most accurate setting
+/// reaches, hypot(target, least error): paying for accuracy that no setting shows buys nothing.
+/// None meeting the time: the fastest within that target, else the fastest.
 inline void choose(const Budget& budget, Plan& plan) {
   const auto faster = [](const Candidate& a, const Candidate& b) { return a.seconds < b.seconds; };
   const auto moreAccurate = [](const Candidate& a, const Candidate& b) {
@@ -179,15 +192,12 @@ inline void choose(const Budget& budget, Plan& plan) {
                               ? bestWithin(plan.candidates, budget.seconds, target, faster)
                               : bestWithin(plan.candidates, budget.seconds, target, moreAccurate);
   plan.meetsBudget = best != nullptr;
-  if (!best && errorAsked) {
-    double leastFloor = INFINITY;
-    for (const Candidate& c : plan.candidates) leastFloor = std::min(leastFloor, c.floor);
-    if (leastFloor > target) {
-      plan.floorLimitedTarget = std::hypot(target, leastFloor);
-      best = bestWithin(plan.candidates, budget.seconds, plan.floorLimitedTarget, faster);
-      if (!best)  // nor in time: the fastest near the floor
-        best = bestWithin(plan.candidates, INFINITY, plan.floorLimitedTarget, faster);
-    }
+  double leastError = INFINITY;
+  for (const Candidate& c : plan.candidates) leastError = std::min(leastError, c.error);
+  if (!best && errorAsked && leastError > target && std::isfinite(leastError)) {
+    plan.achievableTarget = std::hypot(target, leastError);
+    best = bestWithin(plan.candidates, budget.seconds, plan.achievableTarget, faster);
+    if (!best) best = bestWithin(plan.candidates, INFINITY, plan.achievableTarget, faster);
   }
   if (!best) best = bestWithin(plan.candidates, INFINITY, INFINITY, faster);
   for (Candidate& c : plan.candidates)  // `meets` says: within the user's own limits

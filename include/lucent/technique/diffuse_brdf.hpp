@@ -4,16 +4,37 @@
 /// profile's total diffuse reflectance, B(x) = E(x) Rd_total. It is the limit of the dipole sum
 /// B(x) = int E(x') Rd(|x - x'|) dA' when E is constant over Rd's reach: what engines fall back to
 /// when the reach is below a pixel, and what the planner picks there.
+#include <algorithm>
 #include <atomic>
 #include <memory>
 #include <vector>
 
 #include "../scene/irradiance.hpp"
 #include "technique.hpp"
+#include "validity.hpp"
 
 namespace lucent::technique {
 
 namespace detail {
+
+/// The BRDF limit holds where irradiance is constant over Rd's reach: on an object at least this
+/// many times the radius holding 99 % of Rd across (the hard-case matrix holds it to 30 % of the
+/// dipole sum there).
+inline constexpr double kMinReachesAcross = 10;
+
+inline std::string brdfLimitHolds(const SceneDescription& scene, const KnobValues& knobs) {
+  const std::string thick = validity::opticallyThick(scene.mesh, scene.medium.material);
+  if (!thick.empty()) return thick;
+  const auto profile = profileOf<double>(scene.medium.material, knobs);
+  double reach = 0;
+  for (const auto& channel : profile.channel) reach = std::max(reach, channel.radiusHolding(0.99));
+  const double across = scene.mesh.bounds().diagonal();
+  if (across >= kMinReachesAcross * reach) return "";
+  return "the object (" + lengthText(across) + " across) is " + numberText(across / reach) +
+         " reaches of Rd across (99 % of Rd within " + lengthText(reach) +
+         "); the diffuse-BRDF limit needs at least " + numberText(kMinReachesAcross) +
+         ": a technique that sums Rd over the surface holds here";
+}
 
 class DiffuseBrdf final : public Prepared {
  public:
@@ -75,7 +96,11 @@ inline Technique diffuseBrdfTechnique() {
   t.defaultSweep = {{"env-strata", {"4", "8", "16"}}};  // its only error besides the model's
   t.quickKnobs = {{"env-strata", "4"}};
   t.model = "dipole";
-  t.validRange = "any scene; accurate only where Rd's reach is below what a pixel covers";
+  t.validRange = validity::thickRange() + ", and at least " +
+                 numberText(detail::kMinReachesAcross) +
+                 " times the radius holding 99 % of Rd across (irradiance constant over Rd's "
+                 "reach); it equals the dipole sum's image where that reach is below a pixel";
+  t.validity = detail::brdfLimitHolds;
   t.prepare = [](const SceneDescription&, const KnobValues& knobs, Statistics&) {
     return std::make_unique<detail::DiffuseBrdf>(knobs);
   };
