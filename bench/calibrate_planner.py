@@ -12,7 +12,7 @@ environment), each row labelled with its scene's features the same way.
 
 usage: bench/calibrate_planner.py [BUILD_DIR] [OUT_DIR]   (defaults: build data/planner)
 A report's results are cached in OUT_DIR/../../build-calibration/<scene>/cache (a rerun resumes).
-Standard library only. About 10 minutes on 2 cores.
+Standard library only. About 12 minutes on 2 cores.
 """
 import csv
 import io

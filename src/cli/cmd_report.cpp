@@ -334,7 +334,8 @@ void writeParetoPlot(const std::string& path, const std::vector<rp::PageRow>& ro
   spec.xLabel = "wall time, prepare + one frame (s)";
   spec.yLabel = "relative RMS error";
   spec.logX = spec.logY = true;
-  spec.width = 1000, spec.height = 650;
+  spec.width = 1200, spec.height = 650;
+  spec.legendOutside = true;  // every corner of the plot may hold a technique's points
   plot::writeLineChart(path, spec, series);
 }
 

@@ -45,6 +45,11 @@ void writeLineChart(const std::string& path, const ChartSpec& spec,
   chart->SetTitle(spec.title);
   chart->GetTitleProperties()->SetFontSize(16);
   chart->SetShowLegend(series.size() > 1);
+  if (spec.legendOutside) {  // the chart shrinks its plot area to make room on the right
+    chart->GetLegend()->SetInline(false);
+    chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+    chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
+  }
   chart->GetAxis(vtkAxis::BOTTOM)->SetTitle(spec.xLabel);
   chart->GetAxis(vtkAxis::LEFT)->SetTitle(spec.yLabel);
   chart->GetAxis(vtkAxis::BOTTOM)->SetLogScale(spec.logX);

@@ -22,6 +22,7 @@ struct ChartSpec {
   std::string title, xLabel, yLabel;
   bool logX = false, logY = false;
   int width = 800, height = 500;
+  bool legendOutside = false;  ///< beside the plot area, not over it (charts whose data fill it)
 };
 
 /// Throws InputError if the PNG cannot be written.

@@ -223,8 +223,7 @@ Technique quadgraphTechnique() {
           "packing", {"blocks", "random", "none"},
           "node order: blocks (BFS blocks, Sec. 5.1), random (the paper's baseline) or none", P),
       KnobSpec::integer("block", 32, 1, 1024, "block side r (r x r nodes per block)", P),
-      KnobSpec::integer("env-strata", 16, 1, 256,
-                        "environment light: strata x strata directions per surface node", P),
+      detail::envStrataKnob("surface node", P),
       KnobSpec::choice("display", {"mesh", "nodes"},
                        "mesh (node values mapped to the input mesh's vertices) or nodes (Sec. 5.3: "
                        "the surface nodes triangulated and rendered)"),

@@ -100,8 +100,8 @@ TEST_CASE("Scene features: a sphere's mean chord 4V/A is 2/3 of its diameter, li
 }
 
 TEST_CASE(
-    "Terms: sub-pixel reach -> diffuse BRDF; front-lit -> local only; back-lit thin -> "
-    "global; no light -> nothing") {
+    "Terms: sub-pixel reach -> diffuse BRDF, front-lit -> local only, back-lit thin -> "
+    "global, no light -> nothing") {
   const TestScene front(30, "marble", {kFront});
   const lp::Plan f = planOf(front, calibrationAt(front.features()), {});
   CHECK(f.terms.reach == lt::Reach::Local);
@@ -167,7 +167,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "Predictions: a power law recovered from its own samples; a scene far from the "
+    "Predictions: a power law recovered from its own samples, a scene far from the "
     "calibration is flagged") {
   std::vector<lp::SettingMeasurement> rows;
   for (double points : {100.0, 1000.0, 10000.0})

@@ -87,9 +87,7 @@ inline Technique diffuseBrdfTechnique() {
   t.paper =
       "Jensen, Marschner, Levoy, Hanrahan 2001, the BRDF approximation of the BSSRDF (its total "
       "diffuse reflectance Rd)";
-  t.knobs = {KnobSpec::integer("env-strata", 16, 1, 256,
-                               "environment light: strata x strata directions per point"),
-             detail::profileKnob()};
+  t.knobs = {detail::envStrataKnob("point"), detail::profileKnob()};
   t.capabilities.multipleScatteringReach = Reach::Point;
   t.capabilities.precomputeScaling = "none";
   t.capabilities.frameScaling = "O(points x lights) shadow rays";

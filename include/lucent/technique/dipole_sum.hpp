@@ -38,8 +38,7 @@ inline std::vector<KnobSpec> dipoleSumKnobs() {
               " bytes each); a spacing from fraction is coarsened (with a warning) to respect "
               "it, an explicit spacing above it is refused",
           Phase::Prepare),
-      KnobSpec::integer("env-strata", 16, 1, 256,
-                        "environment light: strata x strata directions per sample"),
+      envStrataKnob("sample"),
       KnobSpec::choice("precision", {"float", "double"},
                        "scalar of the Rd sum (sums accumulate in double)", Phase::Frame),
       profileKnob()};

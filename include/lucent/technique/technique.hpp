@@ -98,6 +98,13 @@ inline scene::IrradianceSettings irradianceSettings(const SceneDescription& scen
   return irr;
 }
 
+/// The env-strata knob of the techniques that integrate an environment light per `where` (a
+/// sample, a texel, a node): its one spec, read by irradianceSettings below.
+inline KnobSpec envStrataKnob(const std::string& where, Phase phase = Phase::Frame) {
+  return KnobSpec::integer("env-strata", 16, 1, 256,
+                           "environment light: strata x strata directions per " + where, phase);
+}
+
 /// The same, with the technique's env-strata knob.
 inline scene::IrradianceSettings irradianceSettings(const SceneDescription& scene,
                                                     const KnobValues& knobs) {

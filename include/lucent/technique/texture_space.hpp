@@ -54,9 +54,7 @@ inline std::vector<KnobSpec> evaluationKnobs() {
   return {KnobSpec::choice(
               "eval", {"pixel", "vertex"},
               "where Eq. 11 is summed: pixel (every shaded point) or vertex (interpolated B)"),
-          KnobSpec::integer("env-strata", 16, 1, 256,
-                            "environment light: strata x strata directions per irradiance texel"),
-          profileKnob()};
+          envStrataKnob("irradiance texel"), profileKnob()};
 }
 
 template <class... Lists>
