@@ -11,11 +11,12 @@ scattering, from bench/dipole_vs_pathtrace.py's CSV (six materials, three sizes,
 environment), each row labelled with its scene's features the same way.
 
 usage: bench/calibrate_planner.py [BUILD_DIR] [OUT_DIR]   (defaults: build data/planner)
-A report's results are cached in OUT_DIR/../../build-calibration/<scene>/cache (a rerun resumes).
-Standard library only. About 12 minutes on 2 cores.
+A report's results are cached in BUILD_DIR/calibration/<scene>/cache (a rerun with the same lucent
+executable resumes). Standard library only. About 12 minutes on 2 cores.
 """
 import csv
 import io
+import json
 import os
 import subprocess
 import sys
@@ -29,8 +30,10 @@ WORK = os.path.join(BUILD, "calibration")
 FLOORS = "docs/accuracy/pathtrace/dipole-vs-pathtrace.csv"
 RES = ["--width", "48", "--height", "48"]
 FRONT, BACK = "dir:0,0.6,1", "dir:0,0.3,-1"
-# The truths at a cost a 25-minute calibration affords: the path tracer at 256 samples per pixel.
-TRUTH = ["--truth-knob", "pathtrace.spp=256"]
+# The physical truth (the ground truth that simulates single scattering, i.e. every order) at 256 of
+# its swept samples, a cost the calibration affords; the dipole truth (the ground truth that does not)
+# names the model whose floor bench/dipole_vs_pathtrace.py measured. Both read from the registry.
+TRUTH_SAMPLES = 256
 
 # Shapes x materials x sizes x light sides x environment: the scenes the planner's data cover.
 SUITE = {
@@ -78,6 +81,16 @@ def run(args, **kw):
     return subprocess.run([LUCENT] + args, check=True, text=True, **kw)
 
 
+def truths():
+    """(--truth-knob arguments for the physical truth, the model of the dipole truth)."""
+    techniques = json.loads(run(["techniques", "--json"], capture_output=True).stdout)["techniques"]
+    ground = [t for t in techniques if t["capabilities"]["ground_truth"]]
+    physical = next(t for t in ground if t["capabilities"]["single_scattering"])
+    dipole = next(t for t in ground if not t["capabilities"]["single_scattering"])
+    knob = physical["default_sweep"][0]["knob"]
+    return ["--truth-knob", f"{physical['name']}.{knob}={TRUTH_SAMPLES}"], dipole["model"]
+
+
 def features(scene_args):
     """The planner's features of a scene: a dict of name -> text."""
     out = run(["plan", "--features"] + scene_args, capture_output=True).stdout
@@ -85,13 +98,13 @@ def features(scene_args):
     return dict(zip(rows[0], rows[1])), rows[0]
 
 
-def measure_settings():
+def measure_settings(truth_knobs):
     rows, names = [], None
     for scene, extra in SUITE.items():
         scene_args = RES + extra if "--width" not in extra else extra
         start = time.time()
         folder = os.path.join(WORK, scene)
-        run(["report", "--quiet", "--truth", "model", "--out", folder] + TRUTH + scene_args)
+        run(["report", "--quiet", "--truth", "model", "--out", folder] + truth_knobs + scene_args)
         feats, names = features(scene_args)
         with open(os.path.join(folder, "results.csv")) as f:
             for r in csv.DictReader(f):
@@ -106,7 +119,7 @@ def measure_settings():
     write(os.path.join(OUT, "settings.csv"), cols, rows)
 
 
-def measure_floors():
+def measure_floors(model):
     rows, names = [], None
     with open(FLOORS) as f:
         for r in csv.DictReader(f):
@@ -118,7 +131,7 @@ def measure_floors():
             single = max(1 - float(r[f"dipole_over_pt_all_{c}"]) / float(r[f"dipole_over_pt_multiple_{c}"])
                          for c in "rgb")
             rows.append({"scene": f"{r['shape']}-{r['material']}-{r['size_mm']}-env", **feats,
-                         "model": "dipole", "relative_rms_physical": r["relative_rms_vs_all"],
+                         "model": model, "relative_rms_physical": r["relative_rms_vs_all"],
                          "single_share": f"{min(max(single, 0.0), 1.0):.6g}"})
     write(os.path.join(OUT, "model-floors.csv"),
           ["scene"] + names + ["model", "relative_rms_physical", "single_share"], rows)
@@ -136,5 +149,6 @@ def write(path, cols, rows):
 
 
 if __name__ == "__main__":
-    measure_floors()
-    measure_settings()
+    truth_knobs, dipole_model = truths()
+    measure_floors(dipole_model)
+    measure_settings(truth_knobs)

@@ -45,6 +45,8 @@ void printSummary(const plan::Plan& p) {
   std::string terms;
   for (const auto& t : p.terms.terms)
     if (t.simulated) terms += (terms.empty() ? "" : "; ") + t.term;
+  if (plan::choiceMissesSingleScattering(p))
+    terms += " (the choice leaves single scattering out: it is in the predicted error)";
   std::printf("terms: %s\n", terms.empty() ? "none" : terms.c_str());
   if (p.choice)
     std::printf("%s: %s\n", p.meetsBudget ? "plan" : "closest plan (budget not met)",

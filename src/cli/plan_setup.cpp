@@ -57,14 +57,9 @@ plan::Plan planScene(const Args& args, const Scene& scene, const technique::Shad
 
 void enforceHardLimit(const plan::Plan& plan, const plan::Budget& budget) {
   if (!budget.hard || plan.meetsBudget) return;
-  throw InputError(
-      "no technique meets the budget (" +
-      (std::isfinite(budget.seconds) ? technique::numberText(budget.seconds * 1000) + " ms"
-                                     : std::string()) +
-      (std::isfinite(budget.seconds) && !std::isnan(budget.error) ? ", " : "") +
-      (!std::isnan(budget.error) ? "error " + technique::numberText(budget.error) : std::string()) +
-      "); closest: " + (plan.choice ? plan::candidateLine(*plan.choice) : std::string("none")) +
-      "; raise the budget or drop --hard-limit");
+  throw InputError("no technique meets the budget (" + plan::budgetText(budget) + "); closest: " +
+                   (plan.choice ? plan::candidateLine(*plan.choice) : std::string("none")) +
+                   "; raise the budget or drop --hard-limit");
 }
 
 }  // namespace lucent::cli

@@ -70,7 +70,7 @@ TEST_CASE(
   lucent::test::TempDir dir;
   const Run hard = lucentCli("plan --budget-ms 0.001 --hard-limit " + kSmall, dir);
   CHECK(hard.code == 2);
-  CHECK(contains(hard.err, "no technique meets the budget (0.001 ms); closest: "));
+  CHECK(contains(hard.err, "no technique meets the budget (time 1e-06 s); closest: "));
   const Run soft = lucentCli("plan --budget-ms 0.001 " + kSmall, dir);
   CHECK(soft.code == 0);
   CHECK(contains(soft.out, "closest plan (budget not met): "));

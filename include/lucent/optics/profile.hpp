@@ -192,6 +192,12 @@ struct Profile {
     return {channel[0].cumulative(rho), channel[1].cumulative(rho), channel[2].cumulative(rho)};
   }
   Rgb<T> total() const { return {channel[0].total(), channel[1].total(), channel[2].total()}; }
+  /// The largest radius over the channels within which `fraction` of each channel's total leaves:
+  /// how far the profile carries light (the planner's reach, the diffuse-BRDF limit's range).
+  T largestRadiusHolding(T fraction) const {
+    return std::max({channel[0].radiusHolding(fraction), channel[1].radiusHolding(fraction),
+                     channel[2].radiusHolding(fraction)});
+  }
   /// Smallest mean free path over the channels that scatter.
   T minMeanFreePath() const {
     T m = std::numeric_limits<T>::infinity();

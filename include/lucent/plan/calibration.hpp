@@ -107,6 +107,7 @@ class CsvTable {
     return 0;
   }
   const std::string& text(std::size_t row, std::size_t col) const { return mRows[row][col]; }
+  std::size_t line(std::size_t row) const { return mLines[row]; }
   double number(std::size_t row, std::size_t col) const {
     const std::string& s = mRows[row][col];
     char* end = nullptr;
@@ -152,17 +153,24 @@ inline Calibration readCalibration(const std::string& dir) {
       SettingMeasurement m{t.text(r, scene),  t.features(r),      t.text(r, tech),
                            t.text(r, model),  t.text(r, knobs),   t.number(r, seconds),
                            t.number(r, prep), t.number(r, frame), t.number(r, err)};
-      if (!(m.seconds > 0) || !(m.modelError >= 0) || !std::isfinite(m.modelError))
-        t.fail(r + 2, "has a time or error that is not a positive finite number");
+      const bool finite = std::isfinite(m.seconds) && std::isfinite(m.prepareSeconds) &&
+                          std::isfinite(m.frameSeconds) && std::isfinite(m.modelError);
+      if (!finite || !(m.seconds > 0) || !(m.frameSeconds > 0) || !(m.prepareSeconds >= 0) ||
+          !(m.modelError >= 0))
+        t.fail(t.line(r), "has a time or error that is not a finite positive number");
       c.settings.push_back(std::move(m));
     }
   }
   const detail::CsvTable t(dir + "/model-floors.csv", kRecalibrate);
   const std::size_t scene = t.column("scene"), model = t.column("model"),
                     err = t.column("relative_rms_physical"), single = t.column("single_share");
-  for (std::size_t r = 0; r < t.rows(); ++r)
+  for (std::size_t r = 0; r < t.rows(); ++r) {
     c.floors.push_back(
         {t.text(r, scene), t.text(r, model), t.features(r), t.number(r, err), t.number(r, single)});
+    const ModelFloor& f = c.floors.back();
+    if (!(f.error >= 0) || !std::isfinite(f.error) || !(f.singleShare >= 0 && f.singleShare <= 1))
+      t.fail(t.line(r), "has an error that is not finite and >= 0, or a share outside [0, 1]");
+  }
   return c;
 }
 

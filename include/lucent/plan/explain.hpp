@@ -40,6 +40,15 @@ inline std::string evidenceLine(const Candidate& c) {
          numberText(c.floor) + " (the single scattering it leaves out)";
 }
 
+/// "time 0.1 s, error 0.05" (the limits given).
+inline std::string budgetText(const Budget& budget) {
+  using technique::numberText;
+  std::string s = std::isfinite(budget.seconds) ? "time " + numberText(budget.seconds) + " s" : "";
+  if (!std::isnan(budget.error))
+    s += (s.empty() ? "" : ", ") + ("error " + numberText(budget.error));
+  return s;
+}
+
 inline std::string featuresLine(const SceneFeatures& f) {
   using technique::lengthText;
   using technique::numberText;
@@ -59,12 +68,9 @@ inline std::vector<std::string> explain(const Plan& plan, const Budget& budget,
   std::vector<std::string> out{"scene: " + featuresLine(plan.features)};
   for (const auto& t : plan.terms.terms)
     out.push_back(std::string(t.simulated ? "  + " : "  - ") + t.term + ": " + t.reason);
-  const std::string limits =
-      (std::isfinite(budget.seconds) ? "time " + numberText(budget.seconds) + " s" : "") +
-      (std::isfinite(budget.seconds) && !std::isnan(budget.error) ? ", " : "") +
-      (!std::isnan(budget.error) ? "error " + numberText(budget.error) : "") +
-      (budget.given() ? "" : "none; the default target error " + numberText(plan.targetError));
-  out.push_back("budget: " + limits);
+  out.push_back("budget: " + (budget.given() ? budgetText(budget)
+                                             : "none; the default target error " +
+                                                   numberText(plan.targetError)));
   if (!std::isnan(plan.achievableTarget))
     out.push_back("reachable: no setting is predicted within error " +
                   numberText(plan.targetError) +
@@ -80,6 +86,12 @@ inline std::vector<std::string> explain(const Plan& plan, const Budget& budget,
         std::string(plan.meetsBudget ? "choice: " : "choice (closest, budget not met): ") +
         candidateLine(*plan.choice));
     out.push_back("  because: " + evidenceLine(*plan.choice));
+    if (!plan.terms.lit)
+      out.push_back("  (the cheapest: with no light every technique renders the object black)");
+    if (choiceMissesSingleScattering(plan))
+      out.push_back(
+          "  note: the choice does not simulate single scattering, which this scene calls "
+          "for; what it carries is in the predicted error (its model's own error)");
   }
   std::vector<const Candidate*> others;
   for (const auto& c : plan.candidates)

@@ -51,7 +51,8 @@ inline std::pair<std::vector<const SettingMeasurement*>, Calibration> split(
   std::vector<const SettingMeasurement*> on;
   Calibration rest;
   rest.source = c.source + " without " + scene;
-  rest.floors = c.floors;
+  for (const auto& f : c.floors)  // a floor measured on the held-out scene itself leaks too
+    if (f.scene != scene) rest.floors.push_back(f);
   for (const auto& m : c.settings)
     if (m.scene == scene)
       on.push_back(&m);

@@ -130,6 +130,27 @@ inline std::vector<Candidate> settingsOf(const technique::Technique& t, const Sc
   return out;
 }
 
+/// Why none of the technique's calibrated settings is a candidate: none measured, or each out of
+/// its valid range here (the first one's reason).
+inline std::string whyNoSetting(const technique::Technique& t, const Fit& fit,
+                                const Calibration& c) {
+  for (const auto& m : c.settings) {
+    if (m.technique != t.name) continue;
+    try {
+      const technique::KnobValues values = t.values(knobPairs(m.knobs));
+      const std::string why = fit(t, &values);
+      if (!why.empty()) return "its calibrated settings are out of range here: " + why;
+    } catch (const std::exception& e) {
+      return std::string("its calibrated knobs do not apply to this build (") + e.what() + "); " +
+             kRecalibrate;
+    }
+  }
+  return std::string(
+             "not calibrated (its model has no truth to measure it against, or it was "
+             "added since); ") +
+         kRecalibrate;
+}
+
 /// The features of the scene that lie outside the span of the calibration scenes (by more than a
 /// tenth of the similarity scale), each as "name value (measured lo..hi)".
 inline std::vector<std::string> outsideOf(const SceneFeatures& f, const Calibration& c) {
@@ -180,7 +201,7 @@ const Candidate* bestWithin(std::vector<Candidate>& candidates, double seconds, 
 /// a time, the most accurate within it. When no setting reaches the target error (the model's own
 /// error, or a truth's noise, lies above it), the target is what the most accurate setting
 /// reaches, hypot(target, least error): paying for accuracy that no setting shows buys nothing.
-/// None meeting the time: the fastest within that target, else the fastest.
+/// None meeting the time: the fastest within the target, else the fastest.
 inline void choose(const Budget& budget, Plan& plan) {
   const auto faster = [](const Candidate& a, const Candidate& b) { return a.seconds < b.seconds; };
   const auto moreAccurate = [](const Candidate& a, const Candidate& b) {
@@ -199,6 +220,7 @@ inline void choose(const Budget& budget, Plan& plan) {
     best = bestWithin(plan.candidates, budget.seconds, plan.achievableTarget, faster);
     if (!best) best = bestWithin(plan.candidates, INFINITY, plan.achievableTarget, faster);
   }
+  if (!best && errorAsked) best = bestWithin(plan.candidates, INFINITY, target, faster);
   if (!best) best = bestWithin(plan.candidates, INFINITY, INFINITY, faster);
   for (Candidate& c : plan.candidates)  // `meets` says: within the user's own limits
     c.meets = c.seconds <= budget.seconds && !(c.error > target);
@@ -225,10 +247,17 @@ inline Plan makePlan(const technique::Registry& registry, const SceneFeatures& f
     }
     std::vector<Candidate> settings = detail::settingsOf(t, features, fit, calibration, plan.terms);
     if (settings.empty())
-      plan.excluded.push_back(t.name + ": no calibrated setting valid here (" + kRecalibrate + ")");
+      plan.excluded.push_back(t.name + ": " + detail::whyNoSetting(t, fit, calibration));
     for (auto& s : settings) plan.candidates.push_back(std::move(s));
   }
-  detail::choose(limits, plan);
+  if (plan.terms.lit) {
+    detail::choose(limits, plan);
+  } else if (const Candidate* fastest = detail::bestWithin(
+                 plan.candidates, INFINITY, INFINITY,
+                 [](const Candidate& a, const Candidate& b) { return a.seconds < b.seconds; })) {
+    plan.choice = *fastest;  // every technique renders the unlit object black: the cheapest
+    plan.meetsBudget = fastest->seconds <= budget.seconds;
+  }
   if (!budget.given()) plan.meetsBudget = plan.choice.has_value();  // the default is no limit
   return plan;
 }
@@ -249,6 +278,12 @@ inline Fit sceneFit(const technique::Registry& registry, const technique::SceneD
     }
     return "";
   };
+}
+
+/// Whether the terms call for single scattering and the chosen technique leaves it out.
+inline bool choiceMissesSingleScattering(const Plan& plan) {
+  return plan.choice && plan.terms.singleScattering &&
+         !plan.choice->technique->capabilities.singleScattering;
 }
 
 /// The plan for a scene shaded at `request`.

@@ -161,8 +161,9 @@ PowerLaw fitPowerLaw(const std::vector<const Row*>& rows, const Seconds& seconds
 }
 
 /// The power law corrected by what it missed on the measured scenes nearest in cost drivers: its
-/// log residuals there, inverse-distance weighted and shrunk by the distance to the nearest, so a
-/// scene like a measured one inherits its measured time and a scene unlike any gets the law.
+/// log residuals there, inverse-distance weighted, so a scene like a measured one inherits its
+/// measured time. (Shrinking the correction with distance was tried: leave one out, it predicted
+/// worse, x2.14 against x2.13 log-RMS.)
 struct TimeModel {
   PowerLaw law;
   std::vector<std::pair<std::array<double, kCostDrivers>, double>>

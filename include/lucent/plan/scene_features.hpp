@@ -96,15 +96,6 @@ inline SceneFeatures featuresFromValues(const std::array<double, kFeatureNames.s
 }
 
 namespace detail {
-/// Enclosed volume of a closed, outward mesh (divergence theorem), mm^3.
-inline double enclosedVolume(const scene::TriangleMesh& mesh) {
-  double v = 0;
-  for (const auto& t : mesh.triangles)
-    v += glm::dot(glm::dvec3(mesh.positions[t.x]),
-                  glm::cross(glm::dvec3(mesh.positions[t.y]), glm::dvec3(mesh.positions[t.z])));
-  return std::abs(v) / 6;
-}
-
 inline double luminance(const glm::dvec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 
 /// The material's transport lengths and albedo (longest lengths: the channel that carries light
@@ -114,14 +105,14 @@ inline void setOpticalFeatures(const optics::Material& m, SceneFeatures& f) {
   const auto profile =
       optics::Profile<double>::make(optics::ProfileModel::Dipole, optics::Rgb<double>(m.sigmaA),
                                     optics::Rgb<double>(m.sigmaSPrime), m.eta);
+  f.reachMm = profile.largestRadiusHolding(0.99);
   for (int c = 0; c < 3; ++c) {
+    if (!(m.sigmaSPrime[c] > 0)) continue;  // no diffuse light in it (as technique::opticalScales)
     const double st = m.sigmaA[c] + m.sigmaSPrime[c];
-    if (!(st > 0)) continue;
     const double sigmaTr = std::sqrt(3 * m.sigmaA[c] * st);
     f.meanFreePathMm = std::max(f.meanFreePathMm, 1 / st);
     f.diffusionLengthMm = std::max(f.diffusionLengthMm, sigmaTr > 0 ? 1 / sigmaTr : INFINITY);
     f.albedo = std::min(f.albedo, m.sigmaSPrime[c] / st);
-    f.reachMm = std::max(f.reachMm, profile.channel[c].radiusHolding(0.99));
   }
 }
 
@@ -168,7 +159,7 @@ inline SceneFeatures sceneFeatures(const technique::SceneDescription& scene,
   const scene::Bounds bounds = scene.mesh.bounds();
   f.sizeMm = bounds.diagonal();
   f.areaMm2 = technique::surfaceArea(scene.mesh);
-  f.thicknessMm = f.areaMm2 > 0 ? 4 * detail::enclosedVolume(scene.mesh) / f.areaMm2 : 0;
+  f.thicknessMm = f.areaMm2 > 0 ? 4 * std::abs(scene.mesh.signedVolume()) / f.areaMm2 : 0;
   detail::setOpticalFeatures(scene.medium.material, f);
   std::optional<glm::dvec3> towardViewer;
   if (camera) {

@@ -44,23 +44,30 @@ inline Neighbours singleShareOf(const SceneFeatures& f, const Calibration& c) {
       f, rows, [](const ModelFloor& r) { return r.singleShare; }, 1);
 }
 
-inline TermDecision diffuseLimit(const SceneFeatures& f, TermPlan& plan) {
+/// The reach the scene needs: global where the light crossing the object is above the target
+/// (whatever a pixel covers), else a point where Rd's reach is below a pixel, else local.
+inline void decideReach(const SceneFeatures& f, double threshold, TermPlan& plan) {
+  plan.globalShare = f.backLitShare * std::exp(-f.thicknessInDiffusionLengths());
+  plan.reach = plan.globalShare > threshold ? technique::Reach::Global
+               : f.reachInPixels() < 1      ? technique::Reach::Point
+                                            : technique::Reach::Local;
+}
+
+inline TermDecision diffuseLimit(const SceneFeatures& f, const TermPlan& plan) {
   const bool subPixel = f.reachInPixels() < 1;
-  if (subPixel) plan.reach = technique::Reach::Point;
-  return {"multiple scattering as a diffuse BRDF (Rd_total)", subPixel,
+  return {"multiple scattering as a diffuse BRDF (Rd_total)", plan.reach == technique::Reach::Point,
           "99 % of Rd lies within " + technique::lengthText(f.reachMm) + ", " +
               technique::numberText(f.reachInPixels()) + " of a pixel (" +
               technique::lengthText(f.pixelMm) + ")" +
-              (subPixel ? ": a pixel averages the whole profile, so E Rd_total is the same image"
-                        : ": the profile spreads light across pixels, a BRDF would blur nothing "
-                          "and lose the glow")};
+              (!subPixel ? ": the profile spreads light across pixels, a BRDF would lose the glow"
+               : plan.reach == technique::Reach::Point
+                   ? ": a pixel averages the whole profile, so E Rd_total is the same image"
+                   : ", but the light crossing the object needs global transport")};
 }
 
-inline TermDecision globalTransport(const SceneFeatures& f, double threshold, TermPlan& plan) {
-  plan.globalShare = f.backLitShare * std::exp(-f.thicknessInDiffusionLengths());
-  const bool needed = plan.globalShare > threshold && plan.reach != technique::Reach::Point;
-  if (plan.reach != technique::Reach::Point)
-    plan.reach = needed ? technique::Reach::Global : technique::Reach::Local;
+inline TermDecision globalTransport(const SceneFeatures& f, double threshold,
+                                    const TermPlan& plan) {
+  const bool needed = plan.reach == technique::Reach::Global;
   return {"multiple scattering, global (light crossing the object)", needed,
           pct(f.backLitShare) + " of the light comes from behind the object and a mean chord of " +
               technique::lengthText(f.thicknessMm) + " is " +
@@ -99,6 +106,7 @@ inline TermPlan decideTerms(const SceneFeatures& f, const Calibration& c, double
       {"first-surface reflection", false,
        "lucent's dipole, diffusion and voxel techniques render the light that entered the "
        "object; the host renderer's specular BRDF adds the reflection"});
+  detail::decideReach(f, threshold, plan);
   plan.terms.push_back(detail::diffuseLimit(f, plan));
   plan.terms.push_back({"multiple scattering, local (around the lit point)",
                         plan.reach != technique::Reach::Point,

@@ -26,8 +26,7 @@ inline std::string brdfLimitHolds(const SceneDescription& scene, const KnobValue
   const std::string thick = validity::opticallyThick(scene.mesh, scene.medium.material);
   if (!thick.empty()) return thick;
   const auto profile = profileOf<double>(scene.medium.material, knobs);
-  double reach = 0;
-  for (const auto& channel : profile.channel) reach = std::max(reach, channel.radiusHolding(0.99));
+  const double reach = profile.largestRadiusHolding(0.99);
   const double across = scene.mesh.bounds().diagonal();
   if (across >= kMinReachesAcross * reach) return "";
   return "the object (" + lengthText(across) + " across) is " + numberText(across / reach) +
