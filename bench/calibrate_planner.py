@@ -12,7 +12,7 @@ environment), each row labelled with its scene's features the same way.
 
 usage: bench/calibrate_planner.py [BUILD_DIR] [OUT_DIR]   (defaults: build data/planner)
 A report's results are cached in BUILD_DIR/calibration/<scene>/cache (a rerun with the same lucent
-executable resumes). Standard library only. About 12 minutes on 2 cores.
+executable resumes). Standard library only. About 14 minutes on 2 cores.
 """
 import csv
 import io
@@ -67,6 +67,7 @@ SUITE = {
                                     "--material", "marble", "--light", FRONT],
     "twirl-skin1-30-backlit-96px": ["--width", "96", "--height", "96", "--shape", "twirl"],
     "genus7-skin1-30-backlit-192px": ["--width", "192", "--height", "192"],
+    "genus7-skin1-30-backlit-400px": ["--width", "400", "--height", "400"],  # render's default
     "cube-cavity-apple-20-backlit-96px": ["--width", "96", "--height", "96", "--shape", "cube-cavity",
                                           "--size-mm", "20", "--material", "apple"],
     "torus-marble-10-backlit-24px": ["--width", "24", "--height", "24", "--shape", "torus",
