@@ -6,11 +6,13 @@
 /// reads techniques, knobs and capabilities from the registry and numbers from the calibration
 /// files; it names no technique.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "../technique/registry.hpp"
@@ -153,47 +155,54 @@ inline std::string whyNoSetting(const technique::Technique& t, const Fit& fit,
 
 /// The features of the scene that lie outside the span of the calibration scenes (by more than a
 /// tenth of the similarity scale), each as "name value (measured lo..hi)".
+/// The least and greatest of each coordinate over the calibration's rows, each row's coordinates
+/// computed once.
+template <std::size_t N, class Coordinates>
+std::pair<std::array<double, N>, std::array<double, N>> spanOf(const Calibration& c,
+                                                               const Coordinates& coordinates) {
+  std::array<double, N> lo, hi;
+  lo.fill(INFINITY), hi.fill(-INFINITY);
+  for (const auto& m : c.settings) {
+    const std::array<double, N> v = coordinates(m.features);
+    for (std::size_t k = 0; k < N; ++k)
+      lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
+  }
+  return {lo, hi};
+}
+
 inline std::vector<std::string> outsideOf(const SceneFeatures& f, const Calibration& c) {
   std::vector<std::string> out;
   if (c.settings.empty()) return out;
   const auto x = similarityCoordinates(f);
+  const auto [lo, hi] = spanOf<x.size()>(c, similarityCoordinates);
   for (std::size_t k = 0; k < x.size(); ++k) {
-    double lo = INFINITY, hi = -INFINITY;
-    for (const auto& m : c.settings) {
-      const double v = similarityCoordinates(m.features)[k];
-      lo = std::min(lo, v), hi = std::max(hi, v);
-    }
     const double margin = 0.1 * kSimilarityScale[k];
-    if (x[k] < lo - margin || x[k] > hi + margin)
+    if (x[k] < lo[k] - margin || x[k] > hi[k] + margin)
       out.push_back(std::string(kSimilarityNames[k]) + " " + technique::numberText(x[k]) +
                     (isLogCoordinate(k) ? " (log10)" : "") + ", measured " +
-                    technique::numberText(lo) + " to " + technique::numberText(hi));
+                    technique::numberText(lo[k]) + " to " + technique::numberText(hi[k]));
   }
   const auto d = costDrivers(f);  // times extrapolated past a factor 2 in a count
-  for (std::size_t k = 0; k < d.size(); ++k) {
-    if (!isCountDriver(k)) continue;
-    double lo = INFINITY, hi = -INFINITY;
-    for (const auto& m : c.settings) {
-      const double v = costDrivers(m.features)[k];
-      lo = std::min(lo, v), hi = std::max(hi, v);
-    }
-    if (d[k] < lo - std::log(2.0) || d[k] > hi + std::log(2.0))
+  const auto [dlo, dhi] = spanOf<kCostDrivers>(c, costDrivers);
+  for (std::size_t k = 0; k < d.size(); ++k)
+    if (isCountDriver(k) && (d[k] < dlo[k] - std::log(2.0) || d[k] > dhi[k] + std::log(2.0)))
       out.push_back(std::string(kCostDriverNames[k]) + " " + technique::numberText(std::exp(d[k])) +
-                    ", measured " + technique::numberText(std::exp(lo)) + " to " +
-                    technique::numberText(std::exp(hi)) + " (times extrapolated)");
-  }
+                    ", measured " + technique::numberText(std::exp(dlo[k])) + " to " +
+                    technique::numberText(std::exp(dhi[k])) + " (times extrapolated)");
   return out;
+}
+
+inline bool within(const Candidate& c, double seconds, double error) {
+  return c.seconds <= seconds && !(c.error > error);
 }
 
 /// The candidate `better` prefers among those within both limits (null: none).
 template <class Better>
-const Candidate* bestWithin(std::vector<Candidate>& candidates, double seconds, double error,
+const Candidate* bestWithin(const std::vector<Candidate>& candidates, double seconds, double error,
                             const Better& better) {
   const Candidate* best = nullptr;
-  for (Candidate& c : candidates) {
-    c.meets = c.seconds <= seconds && !(c.error > error);
-    if (c.meets && (!best || better(c, *best))) best = &c;
-  }
+  for (const Candidate& c : candidates)
+    if (within(c, seconds, error) && (!best || better(c, *best))) best = &c;
   return best;
 }
 
@@ -223,7 +232,7 @@ inline void choose(const Budget& budget, Plan& plan) {
   if (!best && errorAsked) best = bestWithin(plan.candidates, INFINITY, target, faster);
   if (!best) best = bestWithin(plan.candidates, INFINITY, INFINITY, faster);
   for (Candidate& c : plan.candidates)  // `meets` says: within the user's own limits
-    c.meets = c.seconds <= budget.seconds && !(c.error > target);
+    c.meets = within(c, budget.seconds, target);
   if (best) plan.choice = *best;
 }
 
@@ -257,6 +266,7 @@ inline Plan makePlan(const technique::Registry& registry, const SceneFeatures& f
                  [](const Candidate& a, const Candidate& b) { return a.seconds < b.seconds; })) {
     plan.choice = *fastest;  // every technique renders the unlit object black: the cheapest
     plan.meetsBudget = fastest->seconds <= budget.seconds;
+    for (Candidate& c : plan.candidates) c.meets = true;  // any of them renders the same black
   }
   if (!budget.given()) plan.meetsBudget = plan.choice.has_value();  // the default is no limit
   return plan;
