@@ -111,7 +111,7 @@ int runRender(int argc, char** argv) {
   for (const auto& o : outputs)
     if (!isExr(o) && !isPng(o)) args.fail("--out '" + o + "': use a .exr or .png file name");
 
-  const bool automatic = args.get("method") == "auto";
+  const bool automatic = args.get("method") == plan::kAutomatic;
   const plan::Budget budget = budgetOf(args);
   if (!automatic && (budget.given() || args.has("calibration")))
     args.fail("--budget-ms, --max-error and --calibration go with --method auto");

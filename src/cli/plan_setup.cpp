@@ -1,7 +1,5 @@
 #include "plan_setup.hpp"
 
-#include <cstdlib>
-
 #include <lucent/plan/explain.hpp>
 #include <lucent/plan/scene_features.hpp>
 
@@ -34,12 +32,8 @@ plan::Budget budgetOf(const Args& args) {
 }
 
 plan::Calibration calibrationOf(const Args& args) {
-  std::string dir = args.get("calibration");
-  if (dir.empty()) {
-    const char* env = std::getenv("LUCENT_DATA_DIR");
-    dir = env && *env ? std::string(env) + "/planner"
-                      : std::string(LUCENT_SOURCE_DATA_DIR) + "/planner";
-  }
+  const std::string dir =
+      plan::calibrationDirectory(args.get("calibration"), LUCENT_SOURCE_DATA_DIR);
   try {
     return plan::readCalibration(dir);
   } catch (const plan::CalibrationError& e) {

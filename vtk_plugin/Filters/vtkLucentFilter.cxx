@@ -8,6 +8,7 @@
 
 #include <vtkCommunicator.h>
 #include <vtkCompositeDataSet.h>
+#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -17,10 +18,13 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSMPTools.h>
+#include <vtkStringArray.h>
 #include <vtkUnsignedCharArray.h>
 
 #include <lucent/image/display_encode.hpp>
 #include <lucent/optics/materials.hpp>
+#include <lucent/plan/explain.hpp>
+#include <lucent/plan/scene_features.hpp>
 #include <lucent/technique/core_techniques.hpp>
 
 #include "lucentPolyDataMesh.h"
@@ -59,6 +63,21 @@ vtkSmartPointer<vtkFloatArray> tupleArray(const char* name, const std::vector<gl
   return a;
 }
 
+vtkSmartPointer<vtkStringArray> textArray(const char* name, const std::vector<std::string>& lines) {
+  auto a = vtkSmartPointer<vtkStringArray>::New();
+  a->SetName(name);
+  for (const auto& line : lines) a->InsertNextValue(line);
+  return a;
+}
+
+/// "tsis: samples=1600, atlas-resolution=1024, ...": the technique and every knob's value.
+std::string settingText(const lt::Technique& t, const lt::KnobValues& knobs) {
+  std::string s = t.name + ":";
+  for (const auto& [name, value] : knobs.values())
+    s += (s.back() == ':' ? " " : ", ") + name + "=" + value;
+  return s;
+}
+
 vtkSmartPointer<vtkUnsignedCharArray> colourArray(const std::vector<glm::dvec3>& values,
                                                   double exposure) {
   auto a = vtkSmartPointer<vtkUnsignedCharArray>::New();
@@ -86,6 +105,13 @@ void vtkLucentFilter::SetMaterial(const char* name) {
   const std::string value = name ? name : "";
   if (value == this->Material) return;
   this->Material = value;
+  this->Modified();
+}
+
+void vtkLucentFilter::SetCalibrationDirectory(const char* dir) {
+  const std::string value = dir ? dir : "";
+  if (value == this->CalibrationDirectory) return;
+  this->CalibrationDirectory = value;
   this->Modified();
 }
 
@@ -146,18 +172,21 @@ void vtkLucentFilter::PrintSelf(ostream& os, vtkIndent indent) {
      << indent << "LightDirection: " << this->LightDirection[0] << " " << this->LightDirection[1]
      << " " << this->LightDirection[2] << "\n"
      << indent << "LightIrradiance: " << this->LightIrradiance << "\n"
-     << indent << "Exposure: " << this->Exposure << "\n";
+     << indent << "Exposure: " << this->Exposure << "\n"
+     << indent << "BudgetMs: " << this->BudgetMs << "\n"
+     << indent << "MaxError: " << this->MaxError << "\n"
+     << indent << "CalibrationDirectory: " << this->CalibrationDirectory << "\n";
   for (const auto& [name, value] : this->Knobs) os << indent << name << ": " << value << "\n";
 }
-
-namespace {}  // namespace
 
 /// What a run is asked for, checked before any work (the same on every rank).
 struct vtkLucentFilter::Request {
   lucent::optics::Material material;
-  const lt::Technique* technique = nullptr;
+  const lt::Technique* technique = nullptr;  ///< null with "auto" until the plan is made
   lt::KnobValues knobs;
   glm::dvec3 towardLight{0, 0, 1};
+  lucent::plan::Calibration calibration;  ///< with "auto": read before any work
+  lucent::plan::Budget budget;
 };
 
 namespace {
@@ -243,6 +272,15 @@ std::vector<lt::Inclusion> inclusionsOf(vtkDataObject* input, double scale,
   return out;
 }
 
+/// The unit direction towards the light.
+glm::dvec3 unitTowardLight(const double direction[3]) {
+  const glm::dvec3 toward(direction[0], direction[1], direction[2]);
+  const double length = glm::length(toward);
+  if (!(length > 0) || !std::isfinite(length))
+    throw lt::RequestError(
+        "LightDirection must be a finite, non-zero direction towards the light, e.g. 0 0 1");
+  return toward / length;
+}
 /// The whole surface's vertex points that are this rank's own points, in its order.
 lt::ShadeRequest localRequest(const lucent::scene::TriangleMesh& whole,
                               const std::vector<vtkIdType>& wholeIndex) {
@@ -265,25 +303,56 @@ vtkLucentFilter::Request vtkLucentFilter::CheckRequest() const {
         "Material '" + this->Material +
         "' is not a measured material; use one of: " + lucent::optics::measuredMaterialNames());
   r.material = *material;
-  r.technique = &Techniques().get(this->Technique);
-  if (!lt::shadesVertices(*r.technique))
+  if (this->Technique == lucent::plan::kAutomatic) {
+    if (this->BudgetMs > 0) r.budget.seconds = this->BudgetMs / 1000;
+    if (this->MaxError > 0) r.budget.error = this->MaxError;
+    try {
+      r.calibration = lucent::plan::readCalibration(
+          lucent::plan::calibrationDirectory(this->CalibrationDirectory, LUCENT_SOURCE_DATA_DIR));
+    } catch (const lucent::plan::CalibrationError& e) {
+      throw lt::RequestError(std::string(e.what()) +
+                             " (or set CalibrationDirectory to a folder "
+                             "holding it)");
+    }
+  } else {
+    r.technique = &Techniques().get(this->Technique);
+    r.knobs = this->KnobsOf(*r.technique);
+  }
+  r.towardLight = unitTowardLight(this->LightDirection);
+  return r;
+}
+
+lt::KnobValues vtkLucentFilter::KnobsOf(const lt::Technique& technique) const {
+  if (!lt::shadesVertices(technique))
     throw lt::RequestError(
-        "technique '" + r.technique->name + "' does not shade vertices; the filter offers: " +
-        Techniques().names([](const lt::Technique& t) { return lt::shadesVertices(t); }));
+        "technique '" + technique.name + "' does not shade vertices; the filter offers: " +
+        Techniques().names([](const lt::Technique& t) { return lt::shadesVertices(t); }) + ", or " +
+        lucent::plan::kAutomatic);
   lt::KnobList given;
-  const std::string prefix = r.technique->name + ".";
+  const std::string prefix = technique.name + ".";
   for (const auto& [name, value] : this->Knobs)
     if (name.compare(0, prefix.size(), prefix) == 0)
       given.emplace_back(name.substr(prefix.size()), value);
-  r.knobs = r.technique->values(given);
-  const glm::dvec3 toward(this->LightDirection[0], this->LightDirection[1],
-                          this->LightDirection[2]);
-  const double length = glm::length(toward);
-  if (!(length > 0) || !std::isfinite(length))
+  return technique.values(given);
+}
+
+std::vector<std::string> vtkLucentFilter::PlanTechnique(Request& request,
+                                                        const lt::SceneDescription& scene,
+                                                        const lt::ShadeRequest& shade) const {
+  namespace lp = lucent::plan;
+  const lp::SceneFeatures features = lp::sceneFeatures(scene, shade, /*camera=*/nullptr);
+  const lp::Plan plan =
+      lp::makePlan(Techniques(), scene, shade, features, request.calibration, request.budget);
+  if (!plan.choice) {
+    std::string why;
+    for (const auto& e : plan.excluded) why += "; " + e;
     throw lt::RequestError(
-        "LightDirection must be a finite, non-zero direction towards the light, e.g. 0 0 1");
-  r.towardLight = toward / length;
-  return r;
+        "Technique auto: no calibrated technique that shades vertices can serve this surface" +
+        why + "; name a technique");
+  }
+  request.technique = plan.choice->technique;
+  request.knobs = request.technique->values(lp::knobPairs(plan.choice->knobs));
+  return lp::explain(plan, request.budget);
 }
 
 int vtkLucentFilter::RequestData(vtkInformation*, vtkInformationVector** inputVector,
@@ -354,13 +423,20 @@ int vtkLucentFilter::ShadeSurface(vtkDataObject* input, vtkPolyData* output,
       if (name != stage) stage = name, ++stages;
       this->UpdateProgress(1 - std::pow(0.5, stages - 1) * (1 - 0.5 * std::clamp(f, 0.0, 1.0)));
     };
+    // Every rank plans from the whole surface, so all choose the same.
+    const std::vector<std::string> plan =
+        request.technique ? std::vector<std::string>()
+                          : this->PlanTechnique(request, scene, lt::vertexRequest(scene.mesh));
     const lt::ShadeRequest shade = localRequest(scene.mesh, surfaces.wholeIndex);
     const lt::Rendered result =
         Techniques().render(*request.technique, scene, request.knobs, shade);
     for (const auto& w : result.stats.warnings)
       vtkWarningMacro(<< request.technique->name << ": " << w);
     this->SampleCount = vtkIdType(result.stats.samples);
+    this->ChosenTechnique = settingText(*request.technique, request.knobs);
     this->WriteArrays(output, result);
+    output->GetFieldData()->AddArray(textArray("LucentTechnique", {this->ChosenTechnique}));
+    if (!plan.empty()) output->GetFieldData()->AddArray(textArray("LucentPlan", plan));
     this->UpdateProgress(1.0);
     return 1;
   } catch (const std::exception& e) {

@@ -25,6 +25,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <vector>
 
 #include <vtkPolyDataAlgorithm.h>
 #include "LucentFiltersModule.h"
@@ -32,9 +33,13 @@
 class vtkMultiProcessController;
 #ifndef __VTK_WRAP__
 namespace lucent::technique {
+class KnobValues;
+struct Technique;
 class Registry;
 struct Rendered;
 struct Medium;
+struct SceneDescription;
+struct ShadeRequest;
 }  // namespace lucent::technique
 #endif
 
@@ -69,12 +74,35 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
 
   ///@{
   /// The technique, by its registry name; default the first offered (the ground truth, reference).
-  /// GetTechniqueName(i) lists those offered.
+  /// GetTechniqueName(i) lists those offered. "auto" (lucent::plan::kAutomatic): the planner's
+  /// choice for this surface, material and light within BudgetMs and MaxError (`lucent plan`).
   void SetTechnique(const char* name);
   const char* GetTechnique() const { return this->Technique.c_str(); }
   static int GetNumberOfTechniques();
   static std::string GetTechniqueName(int i);
   ///@}
+
+  ///@{
+  /// The limits Technique "auto" plans within: BudgetMs, time for one run (0: none); MaxError,
+  /// relative RMS against the physical truth (0: none; with neither, the planner's default
+  /// target). The plan, one line per decision with the measured figures it rests on, is the
+  /// output's field data "LucentPlan".
+  vtkSetClampMacro(BudgetMs, double, 0.0, 1.0e12);
+  vtkGetMacro(BudgetMs, double);
+  vtkSetClampMacro(MaxError, double, 0.0, 1.0e3);
+  vtkGetMacro(MaxError, double);
+  ///@}
+
+  ///@{
+  /// The planner's measured data (settings.csv, model-floors.csv). Empty, the default:
+  /// $LUCENT_DATA_DIR/planner, else the source tree's data/planner.
+  void SetCalibrationDirectory(const char* dir);
+  const char* GetCalibrationDirectory() const { return this->CalibrationDirectory.c_str(); }
+  ///@}
+
+  /// The technique and knobs of the last run ("tsis: samples=400", the planner's choice with
+  /// "auto"); also the output's field data "LucentTechnique".
+  const char* GetChosenTechnique() const { return this->ChosenTechnique.c_str(); }
 
   ///@{
   /// A knob of any offered technique by its qualified name, e.g. SetKnob("tsis.samples", "4096").
@@ -131,9 +159,17 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   /// Shades `input` (surfaces) into `output`: the checks, the whole surface in millimetres, the
   /// technique, the arrays. 1 on success; 0 with the error reported.
   int ShadeSurface(vtkDataObject* input, vtkPolyData* output, const MediumSetup& medium);
-  /// Checks the material, technique, knobs and light against the technique's own description.
+  /// Checks the material, technique, knobs and light against the technique's own description
+  /// (with "auto": reads the planner's calibration).
   Request CheckRequest() const;
+  /// The filter's knobs of `technique`, checked against its description.
+  lucent::technique::KnobValues KnobsOf(const lucent::technique::Technique& technique) const;
   void WriteArrays(vtkPolyData* output, const lucent::technique::Rendered& result) const;
+  /// With Technique "auto": the plan's technique and knobs for the scene, into `request`; its
+  /// explanation, one line per decision.
+  std::vector<std::string> PlanTechnique(Request& request,
+                                         const lucent::technique::SceneDescription& scene,
+                                         const lucent::technique::ShadeRequest& shade) const;
 #endif
 
   std::string Material = "skin1";
@@ -143,6 +179,10 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   double LightDirection[3] = {0.0, 0.0, 1.0};
   double LightIrradiance = 1.0;
   double Exposure = 1.0;
+  double BudgetMs = 0.0;
+  double MaxError = 0.0;
+  std::string CalibrationDirectory;
+  std::string ChosenTechnique;
   vtkIdType SampleCount = 0;
   vtkMultiProcessController* Controller = nullptr;
 

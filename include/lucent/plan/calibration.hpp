@@ -8,6 +8,7 @@
 /// changes no code.
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -138,6 +139,15 @@ class CsvTable {
 
 /// How the calibration files are made again, for every error message about them.
 inline const char* kRecalibrate = "regenerate it with bench/calibrate_planner.py";
+
+/// The folder the calibration is read from: `given` when not empty, else $LUCENT_DATA_DIR/planner
+/// (an installed copy), else `builtInDataDir`/planner (the source tree's data/, compiled in).
+inline std::string calibrationDirectory(const std::string& given,
+                                        const std::string& builtInDataDir) {
+  if (!given.empty()) return given;
+  const char* env = std::getenv("LUCENT_DATA_DIR");
+  return (env && *env ? std::string(env) : builtInDataDir) + "/planner";
+}
 
 /// Reads DIR/settings.csv and DIR/model-floors.csv.
 inline Calibration readCalibration(const std::string& dir) {

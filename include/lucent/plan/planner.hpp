@@ -34,6 +34,10 @@ struct Budget {
 /// image (the papers' RMSE figures sit between 0.01 and 0.05).
 inline constexpr double kDefaultTargetError = 0.05;
 
+/// What every front end takes in place of a technique's name to have the planner choose
+/// (`render --method auto`, the VTK filter's and the pass's Technique).
+inline constexpr const char* kAutomatic = "auto";
+
 /// One technique setting, predicted on the scene.
 struct Candidate {
   const technique::Technique* technique = nullptr;
