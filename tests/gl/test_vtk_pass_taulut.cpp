@@ -17,85 +17,26 @@
 #include <lucent/scene/shapes.hpp>
 #include <lucent/technique/core_techniques.hpp>
 
+#include "cpu_agreement.hpp"
 #include "pass_scene.hpp"
 #include "raycast/embree_ray_caster.hpp"
 
 namespace {
 namespace lt = lucent::technique;
+using lucent_test::Agreement;
 using lucent_test::Frame;
+using lucent_test::Inner;
 using lucent_test::lastFrame;
 using lucent_test::PassScene;
 
-using lucent::vtkadapter::polyDataOf;
-
-/// The pass's millimetre frame for data scaled to sizeMm: centred on the bounds, scaled.
-struct MillimetreFrame {
-  glm::dvec3 centre;
-  double scale;
-  glm::dvec3 operator()(const glm::dvec3& world) const { return (world - centre) * scale; }
-};
-
-struct Agreement {
-  double relRms[3] = {}, meanRatio[3] = {};
-  std::size_t pixels = 0;
-};
-
-/// taulut on the CPU at every covered pixel of the GPU frame, compared channel by channel.
-/// An inner body in world coordinates and its material.
-struct Inner {
-  lucent::scene::TriangleMesh world;
-  std::string material;
-};
-
-Agreement compareWithCpu(const Frame& f, const lucent::scene::TriangleMesh& world, double sizeMm,
-                         const std::string& material, const glm::dvec3& towardLight,
+Agreement compareWithCpu(const lucent_test::Frame& f, const lucent::scene::TriangleMesh& world,
+                         double sizeMm, const std::string& material, const glm::dvec3& towardLight,
                          const lt::KnobList& knobs, const std::vector<Inner>& inner = {}) {
-  const lucent::scene::Bounds bounds = world.bounds();
-  const MillimetreFrame toMm{bounds.center(), sizeMm / bounds.diagonal()};
-  lucent::scene::TriangleMesh mm = world;
-  for (auto& p : mm.positions) p = glm::vec3(toMm(glm::dvec3(p)));
-  const lucent::raycast::EmbreeRayCaster caster(mm);
-  lt::SceneDescription scene;
-  scene.meshName = "cube with a cavity";
-  scene.mesh = mm;
-  scene.vertexNormals = mm.vertexNormals();
-  scene.medium.material = *lucent::optics::findMaterial(material);
-  scene.lights = {lucent::scene::DirectionalLight{glm::normalize(towardLight), glm::dvec3(1.0)}};
-  scene.caster = &caster;
-  for (const Inner& body : inner) {
-    lt::Inclusion inc;
-    inc.surface = body.world;
-    for (auto& p : inc.surface.positions) p = glm::vec3(toMm(glm::dvec3(p)));
-    inc.medium.material = *lucent::optics::findMaterial(body.material);
-    scene.inclusions.push_back(inc);
-  }
-  lt::ShadeRequest request;
-  std::vector<std::size_t> pixel;
-  for (std::size_t i = 0; i < std::size_t(f.width) * std::size_t(f.height); ++i) {
-    if (!(f.radiance[4 * i + 3] > 0)) continue;
-    lucent::reference::ShadingPoint p;
-    p.position = toMm(glm::dvec3(f.position[4 * i], f.position[4 * i + 1], f.position[4 * i + 2]));
-    p.cosOut = std::min(1.0, std::abs(double(f.normal[4 * i + 3])));
-    request.points.push_back(p);
-    pixel.push_back(i);
-  }
-  const lt::Registry registry = lt::coreRegistry();
-  const lt::Technique& taulut = registry.get("taulut");
-  const lt::Rendered cpu = registry.render(taulut, scene, taulut.values(knobs), request);
-  Agreement a;
-  a.pixels = pixel.size();
-  double diff2[3] = {}, ref2[3] = {}, gpuSum[3] = {}, cpuSum[3] = {};
-  for (std::size_t k = 0; k < pixel.size(); ++k)
-    for (int c = 0; c < 3; ++c) {
-      const double g = f.radiance[4 * pixel[k] + std::size_t(c)], r = cpu.frame.radiance[k][c];
-      diff2[c] += (g - r) * (g - r), ref2[c] += r * r, gpuSum[c] += g, cpuSum[c] += r;
-    }
-  for (int c = 0; c < 3; ++c) {
-    a.relRms[c] = std::sqrt(diff2[c] / ref2[c]);
-    a.meanRatio[c] = gpuSum[c] / cpuSum[c];
-  }
-  return a;
+  return lucent_test::compareWithCpu(f, world, sizeMm, material, towardLight, "taulut", knobs,
+                                     inner);
 }
+
+using lucent::vtkadapter::polyDataOf;
 
 void setKnobs(vtkLucentPass* pass, const lt::KnobList& knobs) {
   for (const auto& [name, value] : knobs) pass->SetKnob(("taulut." + name).c_str(), value.c_str());
@@ -132,13 +73,8 @@ TEST_CASE(
     CHECK(f.allFiniteNonNegative());
     const Agreement a = compareWithCpu(f, world, sizeMm, "marble",
                                        glm::dvec3(toward[0], toward[1], toward[2]), knobs);
-    for (int c = 0; c < 3; ++c) {
-      MESSAGE("storage " << storage.front().second << " " << storage.back().second << ", channel "
-                         << c << ": relative RMS " << a.relRms[c] << ", mean GPU / CPU "
-                         << a.meanRatio[c] << " over " << a.pixels << " pixels");
-      CHECK(a.meanRatio[c] == doctest::Approx(1.0).epsilon(0.02));
-      CHECK(a.relRms[c] < 0.05);
-    }
+    lucent_test::checkAgreement(a,
+                                "storage " + storage.front().second + " " + storage.back().second);
   }
 }
 
@@ -171,12 +107,7 @@ TEST_CASE(
   const glm::dvec3 light(toward[0], toward[1], toward[2]);
   const Agreement a =
       compareWithCpu(withInner, outerWorld, 6, "marble", light, knobs, {{innerWorld, "ketchup"}});
-  for (int c = 0; c < 3; ++c) {
-    MESSAGE("with a ketchup inner body, channel " << c << ": relative RMS " << a.relRms[c]
-                                                  << ", mean GPU / CPU " << a.meanRatio[c]);
-    CHECK(a.meanRatio[c] == doctest::Approx(1.0).epsilon(0.02));
-    CHECK(a.relRms[c] < 0.05);
-  }
+  lucent_test::checkAgreement(a, "with a ketchup inner body");
   // Without it (the actor hidden), the sphere is marble throughout: a different image.
   innerActor->VisibilityOff();
   scene.render();

@@ -44,7 +44,8 @@ def place_camera(view):
 
 
 # 0. The generated properties against the registry, as the CLI prints it (`lucent techniques --json`).
-SCENE_PROPERTIES = {"Input", "Material", "SizeMm", "LightDirection", "LightIrradiance", "Exposure", "Technique"}
+SCENE_PROPERTIES = {"Input", "Material", "SizeMm", "LightDirection", "LightIrradiance", "Exposure", "Technique",
+                    "BudgetMs", "MaxError", "CalibrationDirectory"}  # the last three: Technique auto's
 
 
 def close(a, b):
@@ -93,8 +94,8 @@ def check_generated_properties(path):
     proxy = probe.SMProxy
     domain = proxy.GetProperty("Technique").GetDomain("list")
     listed = [domain.GetString(i) for i in range(domain.GetNumberOfStrings())]
-    if listed != [t["name"] for t in offered]:
-        fail("the Technique property offers %s, the registry's per-vertex techniques are %s"
+    if listed != [t["name"] for t in offered] + ["auto"]:
+        fail("the Technique property offers %s, the registry's per-vertex techniques (and auto) are %s"
              % (listed, [t["name"] for t in offered]))
     truth = next(t["name"] for t in registry if t["capabilities"]["ground_truth"] and not t["capabilities"]["needs_camera"])
     if proxy.GetProperty("Technique").GetElement(0) != truth:
@@ -163,6 +164,22 @@ for i in range(data.GetNumberOfPoints()):
     (lit if x > 0.4 else unlit if x < -0.4 else []).append(b[0])
 if not (lit and unlit and min(lit) > 10 * max(unlit)):
     fail("the lit side (+x) is not far brighter than the far side")
+# 1a. Technique auto: the planner's choice, one of the offered techniques, with its reasons in field data.
+planned = LucentTranslucent(Input=sphere)
+planned.SizeMm = 20.0
+planned.LightDirection = [1.0, 0.0, 0.0]
+planned.Technique = "auto"
+planned.BudgetMs = 2000.0
+planned.UpdatePipeline()
+chosen_data = servermanager.Fetch(planned)
+chosen = chosen_data.GetFieldData().GetAbstractArray("LucentTechnique")
+plan = chosen_data.GetFieldData().GetAbstractArray("LucentPlan")
+if chosen is None or plan is None or plan.GetNumberOfValues() < 3:
+    fail("Technique auto left no LucentTechnique or LucentPlan in the output's field data")
+chosen_name = chosen.GetValue(0).split(":")[0]
+if chosen_name == "auto" or chosen_data.GetPointData().GetArray("Radiance") is None:
+    fail("Technique auto shaded nothing, or reports no technique: %s" % chosen.GetValue(0))
+print("auto: %s; plan of %d lines" % (chosen.GetValue(0), plan.GetNumberOfValues()))
 # 1b. The volume filter: a scan's isosurface with the scan as the medium. A transfer function of one
 # point is marble's coefficients everywhere, so it must shade as the plain filter shades the same
 # isosurface as marble (both by taulut).
@@ -252,4 +269,15 @@ if not mean_with > 2 * mean_without + 30:
     fail("the pass does not light the back-lit object")
 if not red > 1.5 * blue:
     fail("the translucent colour is not skin-like (red should travel furthest)")
+# 2b. LucentTechnique auto: the planner's choice per frame lights the same back-lit torus.
+lucent_view.LucentEnabled = 1
+lucent_view.LucentTechnique = "auto"
+Render(lucent_view)
+planned_shot = os.path.join(outdir, "paraview-lucent-view-auto.png")
+SaveScreenshot(planned_shot, lucent_view, ImageResolution=[512, 512])
+c, _ = png_pixels(planned_shot)
+mean_auto = sum(sum(c[i]) for i in object_pixels) / len(object_pixels)
+print("LucentTechnique auto: mean byte sum %.1f" % mean_auto)
+if not mean_auto > 2 * mean_without + 30:
+    fail("the view with LucentTechnique auto does not light the back-lit object")
 print("lucent paraview plugin: OK")

@@ -26,6 +26,7 @@ inline std::string withSharedGlsl(const char* stage) {
   std::string source = stage;
   vtkShaderProgram::Substitute(source, "//LUCENT::Optics",
                                std::string(lucent::glsl::kConstants) + lucent::glsl::kOpticsGlsl);
+  vtkShaderProgram::Substitute(source, "//LUCENT::Light", lucent::glsl::kLightGlsl);
   vtkShaderProgram::Substitute(source, "//LUCENT::Voxel", lucent::glsl::kVoxelGlsl);
   vtkShaderProgram::Substitute(source, "//LUCENT::Display", lucent::glsl::kDisplayGlsl);
   return source;

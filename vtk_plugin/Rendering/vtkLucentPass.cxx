@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 
 #include <vtkActor.h>
+#include <vtkCamera.h>
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
 #include <vtkMapper.h>
@@ -31,9 +33,11 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <lucent/optics/materials.hpp>
+#include <lucent/plan/calibration.hpp>
 #include <lucent/technique/core_techniques.hpp>
 
 #include "lucentPassDrawing.h"
+#include "lucentPassPlanner.h"
 #include "lucentPolyDataMesh.h"
 #include "lucentSmpFor.h"
 #include "lucent_glsl.h"
@@ -170,13 +174,17 @@ struct vtkLucentPass::Internals {
   vtkOpenGLQuadHelper* compositeQuad = nullptr;
   std::string lightDepthVs, lightDepthFs, atlasVs, atlasFs, shadeVs;
   std::string shadeFs[2];  ///< stage 3 with the profile's table [0], or in closed form [1]
-  std::string tauShadeFs;
+  std::string tauShadeFs, diffuseShadeFs;
   std::map<vtkActor*, vtkSmartPointer<vtkLucentSurface>> surfaces;
   std::map<const vtkLucentSurface*, vtkSmartPointer<vtkLucentTauLut>> tauLuts;    ///< taulut's twin
   std::map<const vtkLucentSurface*, vtkSmartPointer<vtkLucentProfile>> profiles;  ///< tsis's Rd
   /// Per surface, the build, material and knobs its range was last checked for: the check copies
   /// the mesh, so it runs when one of them changes, not every frame.
   std::map<const vtkLucentSurface*, std::string> rangeChecked;
+  /// Technique auto: the calibration (read once per folder) and each surface's plan with what it
+  /// was made for.
+  std::unique_ptr<lucent::plan::Calibration> calibration;
+  std::map<const vtkLucentSurface*, std::pair<std::string, PassPlan>> plans;
   int frameWidth = 0, frameHeight = 0;
   std::vector<float> frameRadiance, framePosition, frameNormal;
 
@@ -187,17 +195,20 @@ struct vtkLucentPass::Internals {
         atlasFs(withSharedGlsl(lucent::glsl::kAtlasIrradianceFrag)),
         shadeVs(lucent::glsl::kTsisShadeVert),
         shadeFs{shadeVariant(false), shadeVariant(true)},
-        tauShadeFs(withSharedGlsl(lucent::glsl::kTaulutShadeFrag)) {}
+        tauShadeFs(withSharedGlsl(lucent::glsl::kTaulutShadeFrag)),
+        diffuseShadeFs(withSharedGlsl(lucent::glsl::kDiffuseBrdfShadeFrag)) {}
 };
 
 struct vtkLucentPass::FrameSetup {
   glm::dvec3 towardLight{0, 0, 1};
   float irradiance[3] = {1, 1, 1};
   lucent::optics::Material material;
-  int atlasSize = 0, topLevel = 0, shadowSize = 0, samplesPerRow = 0;
+  int atlasSize = 0, topLevel = 0, shadowSize = 0;
+  int samples = 0, samplesPerRow = 0;  ///< tsis's, of the actor being shaded
   vtkMatrix4x4* worldToClip = nullptr;
   float camera[3] = {};
-  glm::mat4 worldToLight{1.0f};  ///< of the actor being shaded
+  float totalDiffuseReflectance[3] = {}, exitScale = 1;  ///< diffuse-brdf's, of the actor
+  glm::mat4 worldToLight{1.0f};                          ///< of the actor being shaded
 };
 
 vtkLucentPass::vtkLucentPass() : Impl(new Internals) { this->RefreshTsisKnobs(); }
@@ -431,9 +442,6 @@ bool vtkLucentPass::SetUpFrame(vtkRenderer* renderer, FrameSetup& frame) {
   frame.shadowSize = this->ShadowMapResolution;
   if (int(I.lightDepth->GetWidth()) != frame.shadowSize)
     I.lightDepth->Resize(unsigned(frame.shadowSize), unsigned(frame.shadowSize));
-  frame.samplesPerRow = int(std::ceil(std::sqrt(double(this->Samples))));
-  I.samplePosition->Resize(unsigned(frame.samplesPerRow), unsigned(frame.samplesPerRow));
-  I.sampleWeight->Resize(unsigned(frame.samplesPerRow), unsigned(frame.samplesPerRow));
 
   vtkMatrix4x4 *worldToView, *viewToClip;
   vtkMatrix3x3* normalMatrix;
@@ -473,6 +481,35 @@ bool vtkLucentPass::RenderLightDepth(vtkOpenGLRenderWindow* window, vtkLucentSur
   return program != nullptr;
 }
 
+vtkShaderProgram* vtkLucentPass::BeginPerPixelStage(vtkOpenGLRenderWindow* window,
+                                                    const std::string& fragmentShader, int width,
+                                                    int height) {
+  Internals& I = *this->Impl;
+  vtkOpenGLState* state = window->GetState();
+  beginDrawing(state, I.translucentFbo,
+               {I.translucentRadiance, I.translucentPosition, I.translucentNormal},
+               I.translucentDepth, width, height);
+  state->vtkglEnable(GL_DEPTH_TEST);  // the nearest translucent surface per pixel
+  state->vtkglDepthFunc(GL_LESS);
+  state->vtkglDepthMask(GL_TRUE);
+  return window->GetShaderCache()->ReadyShaderProgram(I.shadeVs.c_str(), fragmentShader.c_str(),
+                                                      "");
+}
+
+void vtkLucentPass::SetLightUniforms(vtkShaderProgram* program, const FrameSetup& frame) {
+  Internals& I = *this->Impl;
+  I.lightDepth->Activate();
+  program->SetUniformi("lightDepth", I.lightDepth->GetTextureUnit());
+  program->SetUniformMatrix4x4("worldToLight",
+                               const_cast<float*>(glm::value_ptr(frame.worldToLight)));
+  const float toward[3] = {float(frame.towardLight.x), float(frame.towardLight.y),
+                           float(frame.towardLight.z)};
+  program->SetUniform3f("towardLight", toward);
+  program->SetUniform3f("lightIrradiance", frame.irradiance);
+  program->SetUniformf("eta", float(frame.material.eta));
+  program->SetUniformf("shadowBias", 1.0f / float(frame.shadowSize));
+}
+
 bool vtkLucentPass::RenderAtlasIrradiance(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
                                           const FrameSetup& frame) {
   Internals& I = *this->Impl;
@@ -485,16 +522,7 @@ bool vtkLucentPass::RenderAtlasIrradiance(vtkOpenGLRenderWindow* window, vtkLuce
   vtkShaderProgram* program =
       window->GetShaderCache()->ReadyShaderProgram(I.atlasVs.c_str(), I.atlasFs.c_str(), "");
   if (program) {
-    I.lightDepth->Activate();
-    program->SetUniformi("lightDepth", I.lightDepth->GetTextureUnit());
-    program->SetUniformMatrix4x4("worldToLight",
-                                 const_cast<float*>(glm::value_ptr(frame.worldToLight)));
-    const float toward[3] = {float(frame.towardLight.x), float(frame.towardLight.y),
-                             float(frame.towardLight.z)};
-    program->SetUniform3f("towardLight", toward);
-    program->SetUniform3f("lightIrradiance", frame.irradiance);
-    program->SetUniformf("eta", float(frame.material.eta));
-    program->SetUniformf("shadowBias", 1.0f / float(frame.shadowSize));
+    this->SetLightUniforms(program, frame);
     surface->Draw(program, vtkLucentSurface::Atlas);
     I.lightDepth->Deactivate();
   }
@@ -530,9 +558,9 @@ bool vtkLucentPass::DrawImportanceSamples(vtkOpenGLRenderWindow* window, const F
   program->SetUniformi("powerAtlas", I.powerAtlas->GetTextureUnit());
   program->SetUniformi("positionAtlas", I.positionAtlas->GetTextureUnit());
   program->SetUniformi("topLevel", frame.topLevel);
-  program->SetUniformi("sampleCount", this->Samples);
+  program->SetUniformi("sampleCount", frame.samples);
   program->SetUniformi("samplesPerRow", frame.samplesPerRow);
-  const float rotation[2] = {0.5f / float(this->Samples), 0.0f};
+  const float rotation[2] = {0.5f / float(frame.samples), 0.0f};
   program->SetUniform2f("rotation", rotation);
   I.samplesQuad->Render();
   I.positionAtlas->Deactivate();
@@ -544,21 +572,14 @@ bool vtkLucentPass::DrawImportanceSamples(vtkOpenGLRenderWindow* window, const F
 bool vtkLucentPass::ShadeSurface(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
                                  const FrameSetup& frame, int width, int height) {
   Internals& I = *this->Impl;
-  vtkOpenGLState* state = window->GetState();
-  beginDrawing(state, I.translucentFbo,
-               {I.translucentRadiance, I.translucentPosition, I.translucentNormal},
-               I.translucentDepth, width, height);
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthFunc(GL_LESS);
-  state->vtkglDepthMask(GL_TRUE);
-  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
-      I.shadeVs.c_str(), I.shadeFs[I.profiles.at(surface)->IsClosedForm() ? 1 : 0].c_str(), "");
+  vtkShaderProgram* program = this->BeginPerPixelStage(
+      window, I.shadeFs[I.profiles.at(surface)->IsClosedForm() ? 1 : 0], width, height);
   if (program) {
     I.samplePosition->Activate();
     I.sampleWeight->Activate();
     program->SetUniformi("samplePosition", I.samplePosition->GetTextureUnit());
     program->SetUniformi("sampleWeight", I.sampleWeight->GetTextureUnit());
-    program->SetUniformi("sampleCount", this->Samples);
+    program->SetUniformi("sampleCount", frame.samples);
     program->SetUniformi("samplesPerRow", frame.samplesPerRow);
     program->SetUniformf("mmPerUnit", float(surface->GetMillimetresPerUnit()));
     program->SetUniform3f("cameraPosition", frame.camera);
@@ -631,15 +652,7 @@ bool vtkLucentPass::ShadeTauLut(vtkOpenGLRenderWindow* window, const lt::Techniq
     this->ReportError("vtkLucentPass (" + taulut.name + "): " + error);
     return false;
   }
-  vtkOpenGLState* state = window->GetState();
-  beginDrawing(state, I.translucentFbo,
-               {I.translucentRadiance, I.translucentPosition, I.translucentNormal},
-               I.translucentDepth, width, height);
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthFunc(GL_LESS);
-  state->vtkglDepthMask(GL_TRUE);
-  vtkShaderProgram* program =
-      window->GetShaderCache()->ReadyShaderProgram(I.shadeVs.c_str(), I.tauShadeFs.c_str(), "");
+  vtkShaderProgram* program = this->BeginPerPixelStage(window, I.tauShadeFs, width, height);
   if (program) {
     program->SetUniformMatrix("worldToClip", frame.worldToClip);
     lut->Shade(window, surface, frame.camera, program);
@@ -655,17 +668,18 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
   vtkRenderer* renderer = s->GetRenderer();
   this->ClearTranslucentTargets(window->GetState(), width,
                                 height);  // empty even when nothing is translucent
-  const lt::Technique* twin = twinNamed(this->Technique);
-  if (!twin) {
+  const bool automatic = this->Technique == lucent::plan::kAutomatic;
+  const lt::Technique* twin = automatic ? nullptr : twinNamed(this->Technique);
+  if (!automatic && !twin) {
     std::string names;
-    for (const lt::Technique* t : twins()) names += (names.empty() ? "" : ", ") + t->name;
+    for (const lt::Technique* t : twins()) names += t->name + ", ";
     this->ReportError("vtkLucentPass: technique '" + this->Technique +
-                      "' has no GPU twin here; use one of: " + names);
+                      "' has no GPU twin here; use one of: " + names + lucent::plan::kAutomatic);
     return false;
   }
   lt::KnobValues knobs;
   try {
-    knobs = this->TwinValues(*twin);
+    if (twin) knobs = this->TwinValues(*twin);
   } catch (const std::exception& e) {
     this->ReportError(std::string("vtkLucentPass: ") + e.what());
     return false;
@@ -678,7 +692,7 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
   std::vector<vtkActor*> inner;
   for (vtkActor* actor : actors)
     if (isInnerBody(actor)) inner.push_back(actor);
-  if (!inner.empty() && !twin->capabilities.inclusions)
+  if (twin && !inner.empty() && !twin->capabilities.inclusions)
     this->ReportError("vtkLucentPass: " + twin->name + " takes no inner bodies (" +
                       std::to_string(inner.size()) + " actors carry " +
                       lucent::vtkadapter::kInnerMaterialArray +
@@ -693,17 +707,13 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
     if (!surface->Update(actor, this->SizeMm, frame.atlasSize, error))
       continue;  // lines, points: not ours
     ++this->TranslucentActorCount;
-    this->WarnOutsideRange(*surface, *twin, knobs);
-    if (twin->name == "taulut") {
-      if (!this->ShadeTauLut(window, *twin, knobs, surface, inner, frame, width, height))
-        return false;
-      continue;
-    }
-    if (!this->UpdateProfile(window, surface, knobs, frame) ||
-        !this->RenderLightDepth(window, surface, frame) ||
-        !this->RenderAtlasIrradiance(window, surface, frame) ||
-        !this->DrawImportanceSamples(window, frame) ||
-        !this->ShadeSurface(window, surface, frame, width, height))
+    const lt::Technique* actorTwin = twin;
+    lt::KnobValues actorKnobs = knobs;
+    if (automatic &&
+        !this->PlanActor(renderer, surface, inner, width, height, frame, actorTwin, actorKnobs))
+      return false;
+    this->WarnOutsideRange(*surface, *actorTwin, actorKnobs);
+    if (!this->ShadeActor(window, *actorTwin, actorKnobs, surface, inner, frame, width, height))
       return false;
   }
   // Actors gone from the renderer give their buffers back.
@@ -719,9 +729,135 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
         p->second->ReleaseGraphicsResources(window);
         I.profiles.erase(p);
       }
+      I.plans.erase(surface.Get());
     }
   I.surfaces = std::move(seen);
   return this->TranslucentActorCount > 0;
+}
+
+bool vtkLucentPass::ShadeActor(vtkOpenGLRenderWindow* window, const lt::Technique& twin,
+                               const lt::KnobValues& knobs, vtkLucentSurface* surface,
+                               const std::vector<vtkActor*>& inner, FrameSetup& frame, int width,
+                               int height) {
+  if (twin.name == "taulut")
+    return this->ShadeTauLut(window, twin, knobs, surface, inner, frame, width, height);
+  if (twin.name == "diffuse-brdf") {
+    const auto profile = lt::detail::profileOf<double>(frame.material, knobs);
+    const glm::dvec3 total = profile.total();
+    for (int c = 0; c < 3; ++c) frame.totalDiffuseReflectance[c] = float(total[c]);
+    frame.exitScale = float(profile.exitScale);
+    return this->ShadeDiffuseBrdf(window, surface, frame, width, height);
+  }
+  frame.samples = int(knobs.integer("samples"));
+  return this->UpdateProfile(window, surface, knobs, frame) &&
+         this->ShadeTsis(window, surface, frame, width, height);
+}
+
+bool vtkLucentPass::ShadeTsis(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
+                              FrameSetup& frame, int width, int height) {
+  Internals& I = *this->Impl;
+  frame.samplesPerRow = int(std::ceil(std::sqrt(double(frame.samples))));
+  if (int(I.samplePosition->GetWidth()) != frame.samplesPerRow) {
+    I.samplePosition->Resize(unsigned(frame.samplesPerRow), unsigned(frame.samplesPerRow));
+    I.sampleWeight->Resize(unsigned(frame.samplesPerRow), unsigned(frame.samplesPerRow));
+  }
+  return this->RenderLightDepth(window, surface, frame) &&
+         this->RenderAtlasIrradiance(window, surface, frame) &&
+         this->DrawImportanceSamples(window, frame) &&
+         this->ShadeSurface(window, surface, frame, width, height);
+}
+
+bool vtkLucentPass::ShadeDiffuseBrdf(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
+                                     FrameSetup& frame, int width, int height) {
+  Internals& I = *this->Impl;
+  if (!this->RenderLightDepth(window, surface, frame)) return false;
+  vtkShaderProgram* program = this->BeginPerPixelStage(window, I.diffuseShadeFs, width, height);
+  if (program) {
+    this->SetLightUniforms(program, frame);
+    program->SetUniform3f("cameraPosition", frame.camera);
+    program->SetUniform3f("totalDiffuseReflectance", frame.totalDiffuseReflectance);
+    program->SetUniformf("exitScale", frame.exitScale);
+    program->SetUniformMatrix("worldToClip", frame.worldToClip);
+    surface->Draw(program, vtkLucentSurface::Shade);
+    I.lightDepth->Deactivate();
+  }
+  endDrawing(I.translucentFbo);
+  if (!program) this->ReportError("vtkLucentPass: the diffuse-brdf shader did not compile");
+  return program != nullptr;
+}
+
+void vtkLucentPass::SetCalibrationDirectory(const char* dir) {
+  const std::string value = dir ? dir : "";
+  if (value == this->CalibrationDirectory) return;
+  this->CalibrationDirectory = value;
+  this->Impl->calibration.reset();
+  this->Impl->plans.clear();
+  this->Modified();
+}
+
+namespace {
+/// The frame's camera in the surface's millimetre frame (centred on it, scaled), for the plan.
+FrameView frameView(vtkRenderer* renderer, const vtkLucentSurface& surface, int width, int height) {
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const double scale = surface.GetMillimetresPerUnit();
+  const glm::dvec3 centre(surface.GetCentre()[0], surface.GetCentre()[1], surface.GetCentre()[2]);
+  double eye[3], focal[3];
+  camera->GetPosition(eye);
+  camera->GetFocalPoint(focal);
+  FrameView v;
+  v.camera.eye = (glm::dvec3(eye[0], eye[1], eye[2]) - centre) * scale;
+  v.camera.target = (glm::dvec3(focal[0], focal[1], focal[2]) - centre) * scale;
+  v.camera.verticalFovDeg = camera->GetViewAngle();
+  v.camera.width = std::max(1, width), v.camera.height = std::max(1, height);
+  if (camera->GetParallelProjection())
+    v.parallelPixelMm = 2 * camera->GetParallelScale() * scale / double(v.camera.height);
+  return v;
+}
+}  // namespace
+
+bool vtkLucentPass::PlanActor(vtkRenderer* renderer, vtkLucentSurface* surface,
+                              const std::vector<vtkActor*>& inner, int width, int height,
+                              const FrameSetup& frame, const lt::Technique*& twin,
+                              lt::KnobValues& knobs) {
+  Internals& I = *this->Impl;
+  try {
+    if (!I.calibration)
+      I.calibration = std::make_unique<lucent::plan::Calibration>(lucent::plan::readCalibration(
+          lucent::plan::calibrationDirectory(this->CalibrationDirectory, LUCENT_SOURCE_DATA_DIR)));
+    lt::SceneDescription scene;
+    scene.mesh = surface->GetMillimetreMesh();
+    scene.medium.material = frame.material;
+    scene.lights = {lucent::scene::DirectionalLight{
+        frame.towardLight,
+        glm::dvec3(frame.irradiance[0], frame.irradiance[1], frame.irradiance[2])}};
+    std::string key;
+    scene.inclusions = innerBodiesWithin(*surface, inner, key);
+    const FrameView view = frameView(renderer, *surface, width, height);
+    // Re-planned when the pixel at the object changes by 5 % or more, or what else it reads does.
+    const double pixel = viewFeatures(scene, view).pixelMm;
+    key += " " + std::to_string(surface->GetBuildCount()) + " " + frame.material.name + " " +
+           std::to_string(std::lround(20 * std::log(pixel))) + " " +
+           std::to_string(this->MaxError) + " " + std::to_string(this->AtlasResolution);
+    for (int c = 0; c < 3; ++c)
+      key += " " + std::to_string(frame.towardLight[c]) + " " + std::to_string(frame.irradiance[c]);
+    auto& [plannedFor, plan] = I.plans[surface];
+    if (plannedFor != key || !plan.twin) {
+      lucent::plan::Budget budget;
+      if (this->MaxError > 0) budget.error = this->MaxError;
+      plan = planView(registry(), scene, view, *I.calibration, budget,
+                      {{"atlas-resolution", std::to_string(this->AtlasResolution)}});
+      plannedFor = key;
+    }
+    twin = plan.twin;
+    knobs = plan.knobs;
+    this->ChosenTechnique = plan.setting;
+    this->LastPlan.clear();
+    for (const auto& line : plan.explanation) this->LastPlan += line + "\n";
+    return true;
+  } catch (const std::exception& e) {
+    this->ReportError(std::string("vtkLucentPass: ") + e.what());
+    return false;
+  }
 }
 
 void vtkLucentPass::Composite(vtkOpenGLRenderWindow* window) {

@@ -1,8 +1,9 @@
 /// @file vtkLucentPass.h
 /// @brief Translucent (subsurface-scattering) rendering on the GPU as a vtkImageProcessingPass:
-/// the GPU twins of two techniques, texture-space importance sampling (tsis, Chang et al. 2008
-/// Sec. 3; the default, stages below) and the voxel optical-thickness LUT (taulut, Mochida et al.
-/// 2016: vtkLucentTauLut.h).
+/// the GPU twins of three techniques, texture-space importance sampling (tsis, Chang et al. 2008
+/// Sec. 3; the default, stages below), the voxel optical-thickness LUT (taulut, Mochida et al.
+/// 2016: vtkLucentTauLut.h) and the diffuse BRDF with Rd_total (diffuse-brdf), or "auto": the
+/// planner's choice per frame (SetMaxError).
 ///
 /// Every visible, opaque vtkActor with polygons in the renderer is shaded as one homogeneous
 /// translucent object (light does not cross from one actor to another), except actors whose data
@@ -49,6 +50,8 @@ class vtkOpenGLFramebufferObject;
 class vtkOpenGLState;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkRenderer;
+class vtkShaderProgram;
 class vtkTextureObject;
 
 class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
@@ -76,12 +79,28 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
 
   ///@{
   /// The technique whose GPU twin shades the actors: one of the registry's techniques that declare
-  /// vtkLucentPass as their twin (`lucent techniques`: tsis, the default, and taulut). An unknown
-  /// name is reported once and renders nothing translucent.
+  /// vtkLucentPass as their twin (`lucent techniques`: tsis, the default, taulut, diffuse-brdf),
+  /// or "auto". An unknown name is reported once and renders nothing translucent.
   void SetTechnique(const char* name);
   const char* GetTechnique() const { return this->Technique.c_str(); }
   static int GetNumberOfTechniques();
   static std::string GetTechniqueName(int i);
+  ///@}
+
+  ///@{
+  /// Technique "auto" (lucent::plan::kAutomatic): each frame, for each actor as the camera sees it,
+  /// the planner's choice among the twins (lucentPassPlanner.h): diffuse-brdf's when Rd's reach is
+  /// below a pixel, else tsis with the fewest samples predicted to meet MaxError (relative RMS
+  /// against the physical truth; 0: the planner's default target). The calibration is the
+  /// planner's (empty CalibrationDirectory: $LUCENT_DATA_DIR/planner, else the source tree's
+  /// data/planner); its times rank settings by cost, they are not GPU times.
+  vtkSetClampMacro(MaxError, double, 0.0, 1.0e3);
+  vtkGetMacro(MaxError, double);
+  void SetCalibrationDirectory(const char* dir);
+  const char* GetCalibrationDirectory() const { return this->CalibrationDirectory.c_str(); }
+  /// The last actor's technique and knobs as planned, and the plan's reasons (one per line).
+  const char* GetChosenTechnique() const { return this->ChosenTechnique.c_str(); }
+  const char* GetLastPlan() const { return this->LastPlan.c_str(); }
   ///@}
 
   ///@{
@@ -172,11 +191,23 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   /// Stage 1: E' into the atlas (Eq. 4-7) with the position map, and its mip chain (Fig. 2b).
   bool RenderAtlasIrradiance(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
                              const FrameSetup& frame);
+  /// Binds the translucent targets with depth testing and readies the per-pixel program
+  /// (shaders/tsis_shade.vert with `fragmentShader`); null when it does not compile.
+  vtkShaderProgram* BeginPerPixelStage(vtkOpenGLRenderWindow* window,
+                                       const std::string& fragmentShader, int width, int height);
+  /// The light's uniforms of shaders/light.glsl (binds the light's depth map).
+  void SetLightUniforms(vtkShaderProgram* program, const FrameSetup& frame);
   /// Stage 2: N samples by hierarchical warping down the mip chain.
   bool DrawImportanceSamples(vtkOpenGLRenderWindow* window, const FrameSetup& frame);
   /// Stage 3: every pixel sums the samples (Eq. 10-11), depth-tested among translucent actors.
   bool ShadeSurface(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
                     const FrameSetup& frame, int width, int height);
+  /// Stages 0-3 of tsis's twin for one actor with `samples` importance samples.
+  bool ShadeTsis(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface, FrameSetup& frame,
+                 int width, int height);
+  /// diffuse-brdf's twin: depth from the light, then every pixel Rd_total E (no samples).
+  bool ShadeDiffuseBrdf(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface, FrameSetup& frame,
+                        int width, int height);
   void Composite(vtkOpenGLRenderWindow* window);
 #ifndef __VTK_WRAP__
   /// taulut's twin for one actor: prepare (when its geometry or prepare knobs changed), light
@@ -185,6 +216,15 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
                    const lucent::technique::KnobValues& knobs, vtkLucentSurface* surface,
                    const std::vector<vtkActor*>& inner, const FrameSetup& frame, int width,
                    int height);
+  /// Technique auto: the plan for this actor in this frame (cached while what it reads holds).
+  bool PlanActor(vtkRenderer* renderer, vtkLucentSurface* surface,
+                 const std::vector<vtkActor*>& inner, int width, int height,
+                 const FrameSetup& frame, const lucent::technique::Technique*& twin,
+                 lucent::technique::KnobValues& knobs);
+  /// One actor by `twin` with `knobs`.
+  bool ShadeActor(vtkOpenGLRenderWindow* window, const lucent::technique::Technique& twin,
+                  const lucent::technique::KnobValues& knobs, vtkLucentSurface* surface,
+                  const std::vector<vtkActor*>& inner, FrameSetup& frame, int width, int height);
   /// tsis's profile and rd knobs for this actor's stage 3 (vtkLucentProfile).
   bool UpdateProfile(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
                      const lucent::technique::KnobValues& knobs, const FrameSetup& frame);
@@ -210,6 +250,9 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   double LightIrradiance = 1.0;
   double Exposure = 1.0;
   double SurfaceWeight = 0.25;
+  double MaxError = 0.0;
+  std::string CalibrationDirectory;
+  std::string ChosenTechnique, LastPlan;
   bool KeepFrame = false;
   int TranslucentActorCount = 0;
   std::string LastError;

@@ -90,6 +90,10 @@ inline Technique diffuseBrdfTechnique() {
   t.capabilities.multipleScatteringReach = Reach::Point;
   t.capabilities.precomputeScaling = "none";
   t.capabilities.frameScaling = "O(points x lights) shadow rays";
+  // vtkLucentPass shades it per pixel (shaders/diffuse_brdf_shade.frag) with the profile's Rd_total
+  // and the light's depth map for shadows.
+  t.capabilities.gpuTwin = "vtkLucentPass";
+  t.capabilities.gpuTwinKnobs = {{"profile"}};
   t.defaultSweep = {{"env-strata", {"4", "8", "16"}}};  // its only error besides the model's
   t.quickKnobs = {{"env-strata", "4"}};
   t.model = "dipole";

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include <lucent/plan/planner.hpp>
 #include <lucent/technique/core_techniques.hpp>
 
 namespace {
@@ -118,9 +119,12 @@ std::string filterProperties(const lt::Registry& registry) {
     << "        <StringListDomain name=\"list\">\n";
   for (const lt::Technique* t : lt::vertexTechniques(registry))
     o << "          <String value=\"" << escape(t->name) << "\" />\n";
+  o << "          <String value=\"" << lucent::plan::kAutomatic << "\" />\n";
   o << "        </StringListDomain>\n        <Documentation>The technique (lucent techniques lists "
-       "them with "
-    << "their papers and capabilities).</Documentation>\n      </StringVectorProperty>\n";
+       "them with their papers and capabilities), or "
+    << lucent::plan::kAutomatic
+    << ": the planner's choice within BudgetMs and MaxError (lucent plan)."
+       "</Documentation>\n      </StringVectorProperty>\n";
   for (const auto& [t, k] : lt::knobProperties(registry)) o << property(*t, *k, true);
   return o.str();
 }
@@ -144,8 +148,12 @@ std::string viewProperties(const lt::Registry& registry) {
     << escape(twins.empty() ? "" : twins.front())
     << "\">\n        <StringListDomain name=\"list\">\n";
   for (const auto& name : twins) o << "          <String value=\"" << escape(name) << "\" />\n";
+  o << "          <String value=\"" << lucent::plan::kAutomatic << "\" />\n";
   o << "        </StringListDomain>\n        <Documentation>The technique whose GPU twin shades "
-       "the view (lucent techniques lists them).</Documentation>\n      </StringVectorProperty>\n";
+       "the view (lucent techniques lists them), or "
+    << lucent::plan::kAutomatic
+    << ": the planner's choice per frame, within LucentMaxError.</Documentation>\n"
+       "      </StringVectorProperty>\n";
   return o.str() + knobs.str();
 }
 

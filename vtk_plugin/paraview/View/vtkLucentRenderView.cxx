@@ -71,3 +71,11 @@ void vtkLucentRenderView::SetLucentSurfaceWeight(double weight) {
   this->Pass->SetSurfaceWeight(weight);
   this->Modified();
 }
+void vtkLucentRenderView::SetLucentMaxError(double error) {
+  this->Pass->SetMaxError(error);
+  this->Modified();
+}
+void vtkLucentRenderView::SetLucentCalibrationDirectory(const char* dir) {
+  this->Pass->SetCalibrationDirectory(dir);
+  this->Modified();
+}

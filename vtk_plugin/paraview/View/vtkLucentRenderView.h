@@ -31,6 +31,9 @@ class LUCENTPARAVIEWVIEW_EXPORT vtkLucentRenderView : public vtkPVRenderView {
   void SetLucentLightIrradiance(double e);
   void SetLucentExposure(double exposure);
   void SetLucentSurfaceWeight(double weight);
+  /// Technique auto's target error and calibration folder (vtkLucentPass::SetMaxError).
+  void SetLucentMaxError(double error);
+  void SetLucentCalibrationDirectory(const char* dir);
 
  protected:
   vtkLucentRenderView();
