@@ -330,7 +330,7 @@ std::vector<OptionSpec> sceneOptionSpecs() {
        "the scan's values as coefficients: labels:V=MATERIAL,...,V=none (a label map; no --iso) or "
        "points:V/SA_R,SA_G,SA_B/SS_R,SS_G,SS_B;... (piecewise linear, mm^-1)"},
       {"inclusion-mesh", "FILE:MATERIAL",
-       "a closed body of another material, in the object mesh's coordinates (repeatable)", true},
+       "a closed body of another material, in the object mesh's coordinates", true},
       {"fill", "MATERIAL|none",
        "the material of a built-in shape's inner body (bottle: default Merlot; none: the "
        "object's own)"},

@@ -20,26 +20,36 @@ using lucent_test::PassScene;
 bool startsWith(const std::string& s, const std::string& prefix) {
   return s.compare(0, prefix.size(), prefix) == 0;
 }
+
+/// A skin sphere 300 mm across (22 reaches of Rd: inside diffuse-brdf's range), lit from
+/// `toward`, drawn once by `technique` in a square view of `pixels`.
+struct SkinSphere {
+  lucent::scene::TriangleMesh world = lucent::scene::shapes::sphere(1.0, 5);
+  PassScene scene;
+  SkinSphere(const char* technique, const double toward[3], int pixels)
+      : scene(polyDataOf(world), toward, pixels) {
+    scene.pass->SetTechnique(technique);
+    scene.pass->SetMaterial("skin1");
+    scene.pass->SetSizeMm(300);
+    scene.render();
+  }
+};
 }  // namespace
 
 TEST_CASE(
     "vtkLucentPass diffuse-brdf: per-pixel radiance matches diffuse-brdf on the CPU (Rd_total "
     "times the shadowed, Fresnel-transmitted irradiance)") {
-  // A skin sphere 300 mm across, 22 reaches of Rd: inside diffuse-brdf's range.
-  const auto world = lucent::scene::shapes::sphere(1.0, 5);
   const double toward[3] = {0.6, 0.5, 0.6};
-  PassScene scene(polyDataOf(world), toward, 96);
-  scene.pass->SetTechnique("diffuse-brdf");
-  scene.pass->SetMaterial("skin1");
-  scene.pass->SetSizeMm(300);
-  scene.render();
+  SkinSphere sphere("diffuse-brdf", toward, 96);
+  PassScene& scene = sphere.scene;
   INFO(std::string(scene.pass->GetLastError()));
   REQUIRE(scene.pass->GetTranslucentActorCount() == 1);
   const Frame f = lastFrame(scene.pass);
   REQUIRE(f.covered() > 1500);
   CHECK(f.allFiniteNonNegative());
-  const auto a = lucent_test::compareWithCpu(
-      f, world, 300, "skin1", glm::dvec3(toward[0], toward[1], toward[2]), "diffuse-brdf", {});
+  const auto a =
+      lucent_test::compareWithCpu(f, sphere.world, 300, "skin1",
+                                  glm::dvec3(toward[0], toward[1], toward[2]), "diffuse-brdf", {});
   REQUIRE(a.pixels > 1500);
   lucent_test::checkAgreement(a, "diffuse-brdf");
 }
@@ -47,13 +57,9 @@ TEST_CASE(
 TEST_CASE(
     "vtkLucentPass auto: up close the plan is tsis's twin, far away, where Rd's reach is below a "
     "pixel, diffuse-brdf's, which draws no samples, both frames finite") {
-  const auto world = lucent::scene::shapes::sphere(1.0, 5);
   const double toward[3] = {0.3, 0.4, 1.0};
-  PassScene scene(polyDataOf(world), toward, 128);
-  scene.pass->SetTechnique("auto");
-  scene.pass->SetMaterial("skin1");
-  scene.pass->SetSizeMm(300);
-  scene.render();
+  SkinSphere sphere("auto", toward, 128);
+  PassScene& scene = sphere.scene;
   INFO(std::string(scene.pass->GetLastError()));
   REQUIRE(scene.pass->GetTranslucentActorCount() == 1);
   const std::string close = scene.pass->GetChosenTechnique();

@@ -305,7 +305,9 @@ void vtkLucentPass::PrintSelf(ostream& os, vtkIndent indent) {
      << indent << "LightIrradiance: " << this->LightIrradiance << "\n"
      << indent << "Exposure: " << this->Exposure << "\n"
      << indent << "SurfaceWeight: " << this->SurfaceWeight << "\n"
-     << indent << "KeepFrame: " << this->KeepFrame << "\n";
+     << indent << "KeepFrame: " << this->KeepFrame << "\n"
+     << indent << "MaxError: " << this->MaxError << "\n"
+     << indent << "CalibrationDirectory: " << this->CalibrationDirectory << "\n";
 }
 
 void vtkLucentPass::WarnOutsideRange(const vtkLucentSurface& surface, const lt::Technique& t,
