@@ -21,9 +21,11 @@ lp::Calibration stored() { return lp::readCalibration(LUCENT_SOURCE_DIR "/data/p
 
 // The issue's criteria per case: the choice's error within 1.5x of the best measured within the
 // budget, its time within the budget with 20 % slack, no worse than the all-terms default where
-// that fits. They do not hold in every case yet (docs/report/planner.md lists the misses: time
-// predictions are off by x1.9 typically, leave one out); this guards the rates measured when the
-// calibration was written from falling, and every case must have a choice.
+// that fits. "No worse" is up to one display step (plan::kErrorResolution): within a time the
+// planner takes a faster setting whose image cannot look different from the most accurate one's,
+// and such a setting may measure up to that much worse. The criteria do not hold in every case
+// yet (docs/report/planner.md lists the misses); this guards the rates measured when the
+// calibration was written (75, 72 and 18 of 19) from falling, and every case must have a choice.
 TEST_CASE(
     "Planner suite: each scene planned from the others, against the best measured within "
     "its budget") {
@@ -43,16 +45,16 @@ TEST_CASE(
     timeOk += c.timeRatio() <= 1.2;
     if (c.allTermsSeconds <= c.limits.seconds) {
       ++defaultFits;
-      defaultOk += c.chosenError <= c.allTermsError;
+      defaultOk += c.chosenError <= c.allTermsError + lp::kErrorResolution;
     }
   }
   const double n = double(cases.size());
   MESSAGE(errorOk << " / " << n << " within 1.5x of the best error, " << timeOk
                   << " within the budget, " << defaultOk << " / " << defaultFits
-                  << " no worse than the default");
+                  << " no worse than the default (within a display step)");
   CHECK(double(errorOk) / n >= 0.95);
-  CHECK(double(timeOk) / n >= 0.85);
-  CHECK(double(defaultOk) >= 0.75 * double(defaultFits));
+  CHECK(double(timeOk) / n >= 0.9);
+  CHECK(double(defaultOk) >= 0.9 * double(defaultFits));
 }
 
 TEST_CASE("Planner suite: a term dropped on a scene was measured to matter less than the target") {

@@ -167,6 +167,41 @@ TEST_CASE(
 }
 
 TEST_CASE(
+    "Choice within a time: a faster setting whose image cannot differ from the most accurate by a "
+    "display step is taken, and a setting worse than a black image is not chosen while another "
+    "exists") {
+  const TestScene back(5, "skin1", {kBack});
+  const lp::SceneFeatures f = back.features();
+  lp::Calibration cal;
+  cal.source = "the test";
+  cal.floors = {{"cal", "dipole", f, 0.02, 0.01}};
+  // Two dipole settings 0.001 and 0.002 from the model's truth differ from each other by at most
+  // 0.003, below a display step (1 %).
+  cal.settings = {measured("cal", f, "reference", "fraction=1", 1.0, 0.001),
+                  measured("cal", f, "tsis", "defaults", 0.3, 0.002)};
+  lp::Budget time;
+  time.seconds = 2;
+  lp::Plan p = planOf(back, cal, time);
+  REQUIRE(p.choice);
+  CHECK(p.meetsBudget);
+  CHECK(p.choice->technique->name == "tsis");
+  // 0.001 and 0.02 from it: they may differ by 2.1 %, so the more accurate reference is chosen.
+  cal.settings[1] = measured("cal", f, "tsis", "defaults", 0.3, 0.02);
+  p = planOf(back, cal, time);
+  REQUIRE(p.choice);
+  CHECK(p.choice->technique->name == "reference");
+
+  // Only a setting three times worse than black fits 0.05 s: the plan is the closest usable one.
+  cal.settings = {measured("cal", f, "reference", "fraction=1", 1.0, 0.001),
+                  measured("cal", f, "tsis", "samples=400", 0.01, 3.0)};
+  time.seconds = 0.05;
+  p = planOf(back, cal, time);
+  REQUIRE(p.choice);
+  CHECK(p.choice->technique->name == "reference");
+  CHECK_FALSE(p.meetsBudget);
+}
+
+TEST_CASE(
     "Predictions: a power law recovered from its own samples, a scene far from the "
     "calibration is flagged") {
   std::vector<lp::SettingMeasurement> rows;

@@ -34,6 +34,15 @@ struct Budget {
 /// image (the papers' RMSE figures sit between 0.01 and 0.05).
 inline constexpr double kDefaultTargetError = 0.05;
 
+/// Images closer than this (relative RMS) look the same: 1 % of the signal is about one step of an
+/// 8-bit display in the mid-tones (1/255 of full scale, after the x / (1 + x) tone map and sRGB
+/// encoding, near display value 0.5).
+inline constexpr double kErrorResolution = 0.01;
+
+/// The relative RMS error of a black image (|0 - L| / |L| = 1): a setting predicted above it is
+/// worse than drawing nothing.
+inline constexpr double kBlackImageError = 1.0;
+
 /// What every front end takes in place of a technique's name to have the planner choose
 /// (`render --method auto`, the VTK filter's and the pass's Technique).
 inline constexpr const char* kAutomatic = "auto";
@@ -210,31 +219,56 @@ const Candidate* bestWithin(const std::vector<Candidate>& candidates, double sec
   return best;
 }
 
+/// The most accurate candidate within `seconds` and `error`, or a faster one whose image cannot
+/// differ from it by a display step: two settings of one model differ from each other by at most
+/// the sum of their errors against that model's truth (the triangle inequality), so when that sum
+/// is below kErrorResolution no one sees which was drawn.
+inline const Candidate* mostAccurateWithin(const std::vector<Candidate>& candidates, double seconds,
+                                           double error) {
+  const Candidate* best = bestWithin(
+      candidates, seconds, error, [](const auto& a, const auto& b) { return a.error < b.error; });
+  if (!best) return nullptr;
+  const Candidate* fastest = best;
+  for (const Candidate& c : candidates)
+    if (within(c, seconds, error) && c.technique->model == best->technique->model &&
+        c.modelError + best->modelError <= kErrorResolution && c.seconds < fastest->seconds)
+      fastest = &c;
+  return fastest;
+}
+
+/// The candidates to choose from: those predicted better than a black image (relative RMS error
+/// kBlackImageError), unless none is.
+inline std::vector<Candidate> betterThanBlack(const std::vector<Candidate>& candidates) {
+  std::vector<Candidate> out;
+  for (const Candidate& c : candidates)
+    if (c.error < kBlackImageError) out.push_back(c);
+  return out.empty() ? candidates : out;
+}
+
 /// Picks among the candidates: with a target error, the fastest that meets both limits; with only
-/// a time, the most accurate within it. When no setting reaches the target error (the model's own
-/// error, or a truth's noise, lies above it), the target is what the most accurate setting
-/// reaches, hypot(target, least error): paying for accuracy that no setting shows buys nothing.
-/// None meeting the time: the fastest within the target, else the fastest.
+/// a time, the most accurate within it (or a faster setting whose image cannot look different).
+/// When no setting reaches the target error (the model's own error, or a truth's noise, lies above
+/// it), the target is what the most accurate setting reaches, hypot(target, least error): paying
+/// for accuracy that no setting shows buys nothing. None meeting the time: the fastest within the
+/// target, else the fastest. A setting predicted worse than a black image is never chosen while
+/// another exists.
 inline void choose(const Budget& budget, Plan& plan) {
   const auto faster = [](const Candidate& a, const Candidate& b) { return a.seconds < b.seconds; };
-  const auto moreAccurate = [](const Candidate& a, const Candidate& b) {
-    return a.error < b.error;
-  };
+  const std::vector<Candidate> pool = betterThanBlack(plan.candidates);
   const bool errorAsked = !std::isnan(budget.error);
   const double target = errorAsked ? budget.error : INFINITY;
-  const Candidate* best = errorAsked
-                              ? bestWithin(plan.candidates, budget.seconds, target, faster)
-                              : bestWithin(plan.candidates, budget.seconds, target, moreAccurate);
+  const Candidate* best = errorAsked ? bestWithin(pool, budget.seconds, target, faster)
+                                     : mostAccurateWithin(pool, budget.seconds, target);
   plan.meetsBudget = best != nullptr;
   double leastError = INFINITY;
-  for (const Candidate& c : plan.candidates) leastError = std::min(leastError, c.error);
+  for (const Candidate& c : pool) leastError = std::min(leastError, c.error);
   if (!best && errorAsked && leastError > target && std::isfinite(leastError)) {
     plan.achievableTarget = std::hypot(target, leastError);
-    best = bestWithin(plan.candidates, budget.seconds, plan.achievableTarget, faster);
-    if (!best) best = bestWithin(plan.candidates, INFINITY, plan.achievableTarget, faster);
+    best = bestWithin(pool, budget.seconds, plan.achievableTarget, faster);
+    if (!best) best = bestWithin(pool, INFINITY, plan.achievableTarget, faster);
   }
-  if (!best && errorAsked) best = bestWithin(plan.candidates, INFINITY, target, faster);
-  if (!best) best = bestWithin(plan.candidates, INFINITY, INFINITY, faster);
+  if (!best && errorAsked) best = bestWithin(pool, INFINITY, target, faster);
+  if (!best) best = bestWithin(pool, INFINITY, INFINITY, faster);
   for (Candidate& c : plan.candidates)  // `meets` says: within the user's own limits
     c.meets = within(c, budget.seconds, target);
   if (best) plan.choice = *best;
