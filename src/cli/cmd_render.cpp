@@ -2,6 +2,7 @@
 /// and a JSON stats file.
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <tuple>
 
 #include <lucent/plan/explain.hpp>
@@ -63,8 +64,9 @@ std::string statsJson(const Scene& scene, const technique::Technique& t,
 }
 /// The planner's technique and knobs for the scene (render --method auto).
 std::pair<const technique::Technique*, technique::KnobValues> plannedTechnique(
-    const Args& args, const Scene& scene, const plan::Budget& budget) {
-  const plan::Plan p = planScene(args, scene, technique::pixelRequest(scene.camera, scene), budget);
+    const Args& args, const Scene& scene, const technique::ShadeRequest& pixels,
+    const plan::Budget& budget) {
+  const plan::Plan p = planScene(args, scene, pixels, budget);
   enforceHardLimit(p, budget);
   if (!p.choice)
     throw InputError(
@@ -127,9 +129,15 @@ int runRender(int argc, char** argv) {
   checkOutputKnobs(knobs);
 
   Scene scene = buildScene(args);
-  if (automatic) std::tie(chosen, knobs) = plannedTechnique(args, scene, budget);
+  // The plan reads the pixels the camera sees; the render takes the same ones.
+  std::optional<technique::ShadeRequest> pixels;
+  if (automatic) {
+    pixels = technique::pixelRequest(scene.camera, scene);
+    std::tie(chosen, knobs) = plannedTechnique(args, scene, *pixels, budget);
+  }
   const technique::Technique& technique = *chosen;
-  const ImageRun run = renderImage(registry, technique, scene, knobs, !args.has("quiet"));
+  const ImageRun run = renderImage(registry, technique, scene, knobs, !args.has("quiet"),
+                                   pixels ? &*pixels : nullptr);
   for (const auto& note : run.stats.warnings)
     std::fprintf(stderr, "lucent render: warning: %s\n", note.c_str());
   if (scene.medium.heterogeneous())

@@ -85,14 +85,16 @@ void checkOutputKnobs(const technique::KnobValues& knobs) {
 }
 
 ImageRun renderImage(const technique::Registry& registry, const technique::Technique& technique,
-                     Scene& scene, const technique::KnobValues& knobs, bool progress) {
+                     Scene& scene, const technique::KnobValues& knobs, bool progress,
+                     const technique::ShadeRequest* pixels) {
   StageBars bars(progress);
   scene.progress = [&bars](const std::string& stage, double f) { bars.update(stage, f); };
   struct Unhook {  // the callback must not outlive the bars, on any way out
     Scene& scene;
     ~Unhook() { scene.progress = {}; }
   } unhook{scene};
-  const technique::ShadeRequest request = technique::pixelRequest(scene.camera, scene);
+  const technique::ShadeRequest request =
+      pixels ? *pixels : technique::pixelRequest(scene.camera, scene);
   technique::Rendered r = registry.render(technique, scene, knobs, request);
   bars.finish();
 

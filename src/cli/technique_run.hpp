@@ -40,9 +40,11 @@ std::vector<technique::KnobValues> sweepSettings(const technique::Technique& t,
 /// work).
 void checkOutputKnobs(const technique::KnobValues& knobs);
 
-/// Prepare and one frame of `technique` on every pixel the camera sees, with progress bars unless
-/// quiet; output-file knobs get their extras written.
+/// Prepare and one frame of `technique` on every pixel the camera sees (`pixels`: those already
+/// found, else found here), with progress bars unless quiet; output-file knobs get their extras
+/// written.
 ImageRun renderImage(const technique::Registry& registry, const technique::Technique& technique,
-                     Scene& scene, const technique::KnobValues& knobs, bool progress);
+                     Scene& scene, const technique::KnobValues& knobs, bool progress,
+                     const technique::ShadeRequest* pixels = nullptr);
 
 }  // namespace lucent::cli
