@@ -1,9 +1,15 @@
-// Benchmark: cost of one Rd evaluation in the brute-force truth's inner loop, the vectorised float kernel
-// (with whatever clone the CPU selects) against the scalar double path with std::exp, measured in the
-// same run, and how far apart their sums are.
+// Benchmark: cost of one Rd evaluation in the brute-force truth's inner loop, the vectorised float
+// kernel (with whatever clone the CPU selects) against the scalar double path with std::exp,
+// measured in the same run, and how far apart their sums are; the float kernel's flop rate against
+// this machine's FMA peak, measured in the same process (roofline.hpp).
 //   build/bench/rd_kernel_bench
 #include <chrono>
 #include <cstdio>
+#include <thread>
+
+#include "roofline.hpp"
+
+#include <algorithm>
 
 #include <lucent/optics/materials.hpp>
 #include <lucent/reference/dipole_truth.hpp>
@@ -13,16 +19,36 @@ using namespace lucent;
 
 namespace {
 struct NothingOccludes final : scene::RayCaster {
-  std::optional<scene::RayHit> intersect(const glm::dvec3&, const glm::dvec3&, double, double) const override { return {}; }
-  bool occluded(const glm::dvec3&, const glm::dvec3&, double, double) const override { return false; }
+  std::optional<scene::RayHit> intersect(const glm::dvec3&, const glm::dvec3&, double,
+                                         double) const override {
+    return {};
+  }
+  bool occluded(const glm::dvec3&, const glm::dvec3&, double, double) const override {
+    return false;
+  }
 };
 
+/// Float operations of one evaluation of the classic dipole's kernel (reference/rd_sum_kernel.hpp,
+/// counted from the source; an FMA is 2, sqrt and division 1 each although their throughput is a
+/// fraction of an FMA's):
+///   per sample: the offset and r^2, 3 + 5 = 8;
+///   per channel (x3): 2 x (r^2 + z^2, sqrt, -sigma_tr d) = 6; 2 x exp (fast_exp.hpp: 3 for n,
+///   4 for r, 1 for r^2, 13 for the polynomial, 1 for the scale) = 44; 2 x the pole's term
+///   (1 + sigma_tr d as an FMA, times z, times e, d^3, the division) = 14; their sum and the
+///   constant, 2; w Rd into the sum, 2: together 68.
+constexpr double kFlopsPerEvaluation = 8 + 3 * 68;
+/// Of those, the square roots and divisions (6 each), which the FMA peak does not bound.
+constexpr double kSqrtAndDivPerEvaluation = 12;
+
 template <class T>
-std::pair<double, glm::dvec3> nsPerEvaluation(const reference::SurfaceSamples& samples, int points) {
+std::pair<double, glm::dvec3> nsPerEvaluation(const reference::SurfaceSamples& samples,
+                                              int points) {
   const optics::Material m = *optics::findMaterial("skin1");
-  const auto d = optics::Dipole<T>::make(optics::Rgb<T>(m.sigmaA), optics::Rgb<T>(m.sigmaSPrime), T(m.eta));
+  const auto d =
+      optics::Dipole<T>::make(optics::Rgb<T>(m.sigmaA), optics::Rgb<T>(m.sigmaSPrime), T(m.eta));
   const NothingOccludes caster;
-  const std::vector<scene::Light> light{scene::DirectionalLight{glm::dvec3(0, 0, 1), glm::dvec3(1)}};
+  const std::vector<scene::Light> light{
+      scene::DirectionalLight{glm::dvec3(0, 0, 1), glm::dvec3(1)}};
   const reference::DipoleTruth<T> truth(samples, d, light, caster, scene::IrradianceSettings{});
   const auto start = std::chrono::steady_clock::now();
   glm::dvec3 sum(0);
@@ -43,5 +69,17 @@ int main() {
   std::printf("double scalar: %6.2f ns per Rd evaluation\n", nsDouble);
   std::printf("speed-up     : %6.1fx; sums differ by %.2e relative (red)\n", nsDouble / nsFloat,
               std::abs(sumFloat.x / sumDouble.x - 1));
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const double peak1 = bench::fmaPeakGflops(1), peakAll = bench::fmaPeakGflops(cores);
+  std::printf(
+      "roofline     : FMA peak %.1f GFLOP/s on 1 thread, %.1f on %u; STREAM triad %.1f GB/s "
+      "on 1 thread, %.1f on %u\n",
+      peak1, peakAll, cores, bench::triadGigabytesPerSecond(1),
+      bench::triadGigabytesPerSecond(cores), cores);
+  const double achieved = kFlopsPerEvaluation / nsFloat;  // flops per ns = GFLOP/s
+  std::printf(
+      "float kernel : %.0f flops per evaluation (%.0f of them sqrt or division): %.1f GFLOP/s, "
+      "%.0f %% of the 1-thread FMA peak\n",
+      kFlopsPerEvaluation, kSqrtAndDivPerEvaluation, achieved, 100 * achieved / peak1);
   return 0;
 }
