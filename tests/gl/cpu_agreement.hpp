@@ -24,7 +24,8 @@ struct MillimetreFrame {
 
 struct Agreement {
   double relRms[3] = {}, meanRatio[3] = {};
-  std::size_t pixels = 0;
+  std::size_t pixels = 0;   ///< compared
+  std::size_t covered = 0;  ///< drawn by the GPU
 };
 
 /// An inner body in world coordinates and its material.
@@ -82,6 +83,7 @@ inline Agreement compareWithCpu(const Frame& f, const lucent::scene::TriangleMes
   const lt::Rendered cpu = registry.render(t, scene, t.values(knobs), request);
   Agreement a;
   a.pixels = pixel.size();
+  a.covered = f.covered();
   double diff2[3] = {}, ref2[3] = {}, gpuSum[3] = {}, cpuSum[3] = {};
   for (std::size_t k = 0; k < pixel.size(); ++k)
     for (int c = 0; c < 3; ++c) {
@@ -95,14 +97,17 @@ inline Agreement compareWithCpu(const Frame& f, const lucent::scene::TriangleMes
   return a;
 }
 
-/// The GPU frame agrees with the CPU: per channel the mean within 2 % and the relative RMS below
-/// 5 % (each channel's figures are printed under `label`).
-inline void checkAgreement(const Agreement& a, const std::string& label) {
+/// The GPU frame agrees with the CPU on nearly every pixel it drew (a pixel off the mesh by more
+/// than the depth buffer's precision is not compared): per channel the mean within `meanTolerance`
+/// and the relative RMS below `rmsBound` (each channel's figures are printed under `label`).
+inline void checkAgreement(const Agreement& a, const std::string& label,
+                           double meanTolerance = 0.02, double rmsBound = 0.05) {
+  CHECK(double(a.pixels) >= 0.95 * double(a.covered));
   for (int c = 0; c < 3; ++c) {
     MESSAGE(label << ", channel " << c << ": relative RMS " << a.relRms[c] << ", mean GPU / CPU "
-                  << a.meanRatio[c] << " over " << a.pixels << " pixels");
-    CHECK(a.meanRatio[c] == doctest::Approx(1.0).epsilon(0.02));
-    CHECK(a.relRms[c] < 0.05);
+                  << a.meanRatio[c] << " over " << a.pixels << " of " << a.covered << " pixels");
+    CHECK(a.meanRatio[c] == doctest::Approx(1.0).epsilon(meanTolerance));
+    CHECK(a.relRms[c] < rmsBound);
   }
 }
 

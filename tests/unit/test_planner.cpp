@@ -185,11 +185,19 @@ TEST_CASE(
   REQUIRE(p.choice);
   CHECK(p.meetsBudget);
   CHECK(p.choice->technique->name == "tsis");
+  REQUIRE(p.mostAccurate);
+  CHECK(p.mostAccurate->technique->name == "reference");
+  bool said = false;
+  for (const auto& line : lp::explain(p, time))
+    said |=
+        line.find("instead of the most accurate within the time, reference") != std::string::npos;
+  CHECK(said);
   // 0.001 and 0.02 from it: they may differ by 2.1 %, so the more accurate reference is chosen.
   cal.settings[1] = measured("cal", f, "tsis", "defaults", 0.3, 0.02);
   p = planOf(back, cal, time);
   REQUIRE(p.choice);
   CHECK(p.choice->technique->name == "reference");
+  CHECK_FALSE(p.mostAccurate);
 
   // Only a setting three times worse than black fits 0.05 s: the plan is the closest usable one.
   cal.settings = {measured("cal", f, "reference", "fraction=1", 1.0, 0.001),

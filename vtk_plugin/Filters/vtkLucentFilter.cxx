@@ -70,14 +70,6 @@ vtkSmartPointer<vtkStringArray> textArray(const char* name, const std::vector<st
   return a;
 }
 
-/// "tsis: samples=1600, atlas-resolution=1024, ...": the technique and every knob's value.
-std::string settingText(const lt::Technique& t, const lt::KnobValues& knobs) {
-  std::string s = t.name + ":";
-  for (const auto& [name, value] : knobs.values())
-    s += (s.back() == ':' ? " " : ", ") + name + "=" + value;
-  return s;
-}
-
 vtkSmartPointer<vtkUnsignedCharArray> colourArray(const std::vector<glm::dvec3>& values,
                                                   double exposure) {
   auto a = vtkSmartPointer<vtkUnsignedCharArray>::New();
@@ -343,13 +335,10 @@ std::vector<std::string> vtkLucentFilter::PlanTechnique(Request& request,
   const lp::SceneFeatures features = lp::sceneFeatures(scene, shade, /*camera=*/nullptr);
   const lp::Plan plan =
       lp::makePlan(Techniques(), scene, shade, features, request.calibration, request.budget);
-  if (!plan.choice) {
-    std::string why;
-    for (const auto& e : plan.excluded) why += "; " + e;
+  if (!plan.choice)
     throw lt::RequestError(
         "Technique auto: no calibrated technique that shades vertices can serve this surface" +
-        why + "; name a technique");
-  }
+        lp::exclusionText(plan) + "; name a technique");
   request.technique = plan.choice->technique;
   request.knobs = request.technique->values(lp::knobPairs(plan.choice->knobs));
   return lp::explain(plan, request.budget);
@@ -433,7 +422,7 @@ int vtkLucentFilter::ShadeSurface(vtkDataObject* input, vtkPolyData* output,
     for (const auto& w : result.stats.warnings)
       vtkWarningMacro(<< request.technique->name << ": " << w);
     this->SampleCount = vtkIdType(result.stats.samples);
-    this->ChosenTechnique = settingText(*request.technique, request.knobs);
+    this->ChosenTechnique = lucent::plan::settingText(*request.technique, request.knobs);
     this->WriteArrays(output, result);
     output->GetFieldData()->AddArray(textArray("LucentTechnique", {this->ChosenTechnique}));
     if (!plan.empty()) output->GetFieldData()->AddArray(textArray("LucentPlan", plan));

@@ -30,10 +30,25 @@ struct FrameView {
   double parallelPixelMm = 0;   ///< > 0: a parallel projection, one pixel is this
 };
 
+/// What one pixel covers at the object's centre, mm (0: the eye at the centre).
+inline double pixelAtObjectMm(const FrameView& view) {
+  return view.parallelPixelMm > 0 ? view.parallelPixelMm
+                                  : plan::pixelFootprint(view.camera, glm::dvec3(0));
+}
+
+/// What a plan for this view depends on beyond the object, material and light: the pixel at the
+/// object in steps of 5 %, and the side of the object the camera looks from (the light's share
+/// from behind decides global transport). Cheap, so a frame whose plan holds costs no features.
+inline std::string viewKey(const FrameView& view, const glm::dvec3& towardLight) {
+  const double pixel = pixelAtObjectMm(view);
+  const long bin = pixel > 0 && std::isfinite(pixel) ? std::lround(20 * std::log(pixel)) : 0;
+  return std::to_string(bin) + (glm::dot(view.camera.eye, towardLight) < 0 ? " behind" : " front");
+}
+
 struct PassPlan {
   const lt::Technique* twin = nullptr;
   lt::KnobValues knobs;
-  std::string setting;                   ///< the choice as `lucent plan` prints it
+  std::string setting;                   ///< the technique and every knob (plan::settingText)
   std::vector<std::string> explanation;  ///< lucent::plan::explain's lines
 };
 
@@ -62,11 +77,25 @@ inline plan::SceneFeatures viewFeatures(const lt::SceneDescription& scene, const
   lt::ShadeRequest none;  // per pixel, counted below
   none.camera = &view.camera;
   plan::SceneFeatures f = plan::sceneFeatures(scene, none, &view.camera);
-  if (view.parallelPixelMm > 0) f.pixelMm = view.parallelPixelMm;
+  f.pixelMm = pixelAtObjectMm(view);
   const double viewport = double(view.camera.width) * double(view.camera.height);
   f.shadedPoints =
       f.pixelMm > 0 ? std::min(viewport, 0.25 * f.areaMm2 / (f.pixelMm * f.pixelMm)) : viewport;
   return f;
+}
+
+/// `knobs` with the frame's own values of the knobs it has among `frameKnobs`.
+inline lt::KnobValues withFrameKnobs(const lt::Technique& t, const lt::KnobList& knobs,
+                                     const lt::KnobList& frameKnobs) {
+  lt::KnobList merged = knobs;
+  for (const auto& [name, value] : frameKnobs) {
+    if (!t.knob(name)) continue;
+    merged.erase(std::remove_if(merged.begin(), merged.end(),
+                                [&name = name](const auto& k) { return k.first == name; }),
+                 merged.end());
+    merged.emplace_back(name, value);
+  }
+  return t.values(merged);
 }
 
 /// The plan for one actor in this frame. `frameKnobs` are the pass's own values of the knobs that
@@ -78,32 +107,26 @@ inline PassPlan planView(const lt::Registry& registry, const lt::SceneDescriptio
   lt::ShadeRequest request;
   request.camera = &view.camera;
   const plan::Fit base = plan::sceneFit(registry, scene, request);
-  const plan::Fit fit = [&base](const lt::Technique& t, const lt::KnobValues* knobs) {
-    const std::string why = twinUnfit(t, knobs);
-    return why.empty() ? base(t, knobs) : why;
+  // Each setting is checked as the pass would draw it: with the frame's own knobs.
+  const plan::Fit fit = [&](const lt::Technique& t, const lt::KnobValues* knobs) {
+    if (!knobs) {
+      const std::string why = twinUnfit(t, nullptr);
+      return why.empty() ? base(t, nullptr) : why;
+    }
+    const lt::KnobValues drawn = withFrameKnobs(t, knobs->values(), frameKnobs);
+    const std::string why = twinUnfit(t, &drawn);
+    return why.empty() ? base(t, &drawn) : why;
   };
   const plan::Plan p =
       plan::makePlan(registry, viewFeatures(scene, view), calibration, budget, fit);
-  if (!p.choice) {
-    std::string why;
-    for (const auto& e : p.excluded) why += "; " + e;
+  if (!p.choice)
     throw lt::RequestError(
-        "Technique auto: no technique whose GPU twin is the pass can serve this "
-        "object" +
-        why);
-  }
+        "Technique auto: no technique whose GPU twin is the pass can serve this object" +
+        plan::exclusionText(p));
   PassPlan out;
   out.twin = p.choice->technique;
-  lt::KnobList knobs = plan::knobPairs(p.choice->knobs);
-  for (const auto& [name, value] : frameKnobs) {
-    if (!out.twin->knob(name)) continue;
-    knobs.erase(std::remove_if(knobs.begin(), knobs.end(),
-                               [&name = name](const auto& k) { return k.first == name; }),
-                knobs.end());
-    knobs.emplace_back(name, value);
-  }
-  out.knobs = out.twin->values(knobs);
-  out.setting = plan::candidateLine(*p.choice);
+  out.knobs = withFrameKnobs(*out.twin, plan::knobPairs(p.choice->knobs), frameKnobs);
+  out.setting = plan::settingText(*out.twin, out.knobs);
   out.explanation = plan::explain(p, budget);
   return out;
 }

@@ -708,12 +708,13 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
     std::string error;
     if (!surface->Update(actor, this->SizeMm, frame.atlasSize, error))
       continue;  // lines, points: not ours
-    ++this->TranslucentActorCount;
     const lt::Technique* actorTwin = twin;
     lt::KnobValues actorKnobs = knobs;
     if (automatic &&
         !this->PlanActor(renderer, surface, inner, width, height, frame, actorTwin, actorKnobs))
-      return false;
+      continue;  // reported; the other actors are still drawn
+    if (!automatic) this->ChosenTechnique = lucent::plan::settingText(*actorTwin, actorKnobs);
+    ++this->TranslucentActorCount;
     this->WarnOutsideRange(*surface, *actorTwin, actorKnobs);
     if (!this->ShadeActor(window, *actorTwin, actorKnobs, surface, inner, frame, width, height))
       return false;
@@ -744,7 +745,13 @@ bool vtkLucentPass::ShadeActor(vtkOpenGLRenderWindow* window, const lt::Techniqu
   if (twin.name == "taulut")
     return this->ShadeTauLut(window, twin, knobs, surface, inner, frame, width, height);
   if (twin.name == "diffuse-brdf") {
-    const auto profile = lt::detail::profileOf<double>(frame.material, knobs);
+    lucent::optics::Profile<double> profile;
+    try {
+      profile = lt::detail::profileOf<double>(frame.material, knobs);
+    } catch (const std::exception& e) {
+      this->ReportError(std::string("vtkLucentPass (diffuse-brdf): ") + e.what());
+      return false;
+    }
     const glm::dvec3 total = profile.total();
     for (int c = 0; c < 3; ++c) frame.totalDiffuseReflectance[c] = float(total[c]);
     frame.exitScale = float(profile.exitScale);
@@ -810,6 +817,12 @@ FrameView frameView(vtkRenderer* renderer, const vtkLucentSurface& surface, int 
   v.camera.eye = (glm::dvec3(eye[0], eye[1], eye[2]) - centre) * scale;
   v.camera.target = (glm::dvec3(focal[0], focal[1], focal[2]) - centre) * scale;
   v.camera.verticalFovDeg = camera->GetViewAngle();
+  if (camera->GetUseHorizontalViewAngle())  // the angle spans the width: the height's share of it
+    v.camera.verticalFovDeg =
+        2 *
+        std::atan(std::tan(0.5 * camera->GetViewAngle() * lucent::optics::kPi / 180) *
+                  double(std::max(1, height)) / double(std::max(1, width))) *
+        180 / lucent::optics::kPi;
   v.camera.width = std::max(1, width), v.camera.height = std::max(1, height);
   if (camera->GetParallelProjection())
     v.parallelPixelMm = 2 * camera->GetParallelScale() * scale / double(v.camera.height);
@@ -826,26 +839,30 @@ bool vtkLucentPass::PlanActor(vtkRenderer* renderer, vtkLucentSurface* surface,
     if (!I.calibration)
       I.calibration = std::make_unique<lucent::plan::Calibration>(lucent::plan::readCalibration(
           lucent::plan::calibrationDirectory(this->CalibrationDirectory, LUCENT_SOURCE_DATA_DIR)));
-    lt::SceneDescription scene;
-    scene.mesh = surface->GetMillimetreMesh();
-    scene.medium.material = frame.material;
-    scene.lights = {lucent::scene::DirectionalLight{
-        frame.towardLight,
-        glm::dvec3(frame.irradiance[0], frame.irradiance[1], frame.irradiance[2])}};
-    std::string key;
-    scene.inclusions = innerBodiesWithin(*surface, inner, key);
     const FrameView view = frameView(renderer, *surface, width, height);
-    // Re-planned when the pixel at the object changes by 5 % or more, or what else it reads does.
-    const double pixel = viewFeatures(scene, view).pixelMm;
-    key += " " + std::to_string(surface->GetBuildCount()) + " " + frame.material.name + " " +
-           std::to_string(std::lround(20 * std::log(pixel))) + " " +
-           std::to_string(this->MaxError) + " " + std::to_string(this->AtlasResolution);
+    // Planned again when the pixel at the object changes by 5 %, the camera changes sides, or what
+    // else the plan reads changes: the mesh, its inner bodies, the material, light and limits.
+    std::string key = viewKey(view, frame.towardLight) + " " +
+                      std::to_string(surface->GetBuildCount()) + " " + frame.material.name + " " +
+                      std::to_string(this->MaxError) + " " + std::to_string(this->AtlasResolution);
     for (int c = 0; c < 3; ++c)
       key += " " + std::to_string(frame.towardLight[c]) + " " + std::to_string(frame.irradiance[c]);
+    for (vtkActor* actor : inner)
+      key += " " + std::to_string(actor->GetMapper()->GetInputDataObject(0, 0)->GetMTime()) + "/" +
+             std::to_string(actor->GetMTime());
     auto& [plannedFor, plan] = I.plans[surface];
     if (plannedFor != key || !plan.twin) {
+      lt::SceneDescription scene;
+      scene.mesh = surface->GetMillimetreMesh();
+      scene.medium.material = frame.material;
+      scene.lights = {lucent::scene::DirectionalLight{
+          frame.towardLight,
+          glm::dvec3(frame.irradiance[0], frame.irradiance[1], frame.irradiance[2])}};
+      std::string innerKey;
+      scene.inclusions = innerBodiesWithin(*surface, inner, innerKey);
       lucent::plan::Budget budget;
       if (this->MaxError > 0) budget.error = this->MaxError;
+      plannedFor.clear();  // a plan that throws leaves no key behind
       plan = planView(registry(), scene, view, *I.calibration, budget,
                       {{"atlas-resolution", std::to_string(this->AtlasResolution)}});
       plannedFor = key;
@@ -975,6 +992,7 @@ void vtkLucentPass::ReleaseGraphicsResources(vtkWindow* w) {
   for (auto& entry : I.profiles) entry.second->ReleaseGraphicsResources(w);
   I.profiles.clear();
   I.rangeChecked.clear();
+  I.plans.clear();  // keyed by the surfaces just released
   for (auto* fbo : {I.sceneFbo.Get(), I.translucentFbo.Get(), I.lightFbo.Get(), I.atlasFbo.Get(),
                     I.samplesFbo.Get()})
     if (fbo) fbo->ReleaseGraphicsResources(w);

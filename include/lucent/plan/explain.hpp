@@ -11,6 +11,15 @@
 
 namespace lucent::plan {
 
+/// "tsis: samples=1600, atlas-resolution=1024, ...": a technique and every knob's value, as front
+/// ends report the setting they ran.
+inline std::string settingText(const technique::Technique& t, const technique::KnobValues& knobs) {
+  std::string s = t.name + ":";
+  for (const auto& [name, value] : knobs.values())
+    s += (s.back() == ':' ? " " : ", ") + name + "=" + value;
+  return s;
+}
+
 inline std::string candidateLine(const Candidate& c) {
   using technique::numberText;
   return c.technique->name + " (" + c.knobs + "): " + numberText(c.seconds) + " s (frame " +
@@ -86,6 +95,12 @@ inline std::vector<std::string> explain(const Plan& plan, const Budget& budget,
         std::string(plan.meetsBudget ? "choice: " : "choice (closest, budget not met): ") +
         candidateLine(*plan.choice));
     out.push_back("  because: " + evidenceLine(*plan.choice));
+    if (plan.mostAccurate)
+      out.push_back("  instead of the most accurate within the time, " +
+                    candidateLine(*plan.mostAccurate) + ": their images differ by at most " +
+                    technique::numberText(plan.choice->modelError + plan.mostAccurate->modelError) +
+                    " (the sum of their errors against the model's truth), below a display step (" +
+                    technique::numberText(kErrorResolution) + ")");
     if (!plan.terms.lit)
       out.push_back("  (the cheapest: with no light every technique renders the object black)");
     if (choiceMissesSingleScattering(plan))

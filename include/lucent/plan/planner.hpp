@@ -74,6 +74,9 @@ struct Plan {
   /// When no setting reaches the target error: the target the choice was held to instead,
   /// hypot(target, the least predicted error); NaN otherwise.
   double achievableTarget = NAN;
+  /// Within a time: the most accurate setting, when a faster one whose image cannot look
+  /// different from its was chosen instead (detail::mostAccurateWithin).
+  std::optional<Candidate> mostAccurate;
   std::vector<std::string> excluded;            ///< "technique: why"
   std::vector<std::string> outsideCalibration;  ///< features outside what was measured
 };
@@ -222,11 +225,12 @@ const Candidate* bestWithin(const std::vector<Candidate>& candidates, double sec
 /// The most accurate candidate within `seconds` and `error`, or a faster one whose image cannot
 /// differ from it by a display step: two settings of one model differ from each other by at most
 /// the sum of their errors against that model's truth (the triangle inequality), so when that sum
-/// is below kErrorResolution no one sees which was drawn.
+/// is below kErrorResolution no one sees which was drawn. `mostAccurate` gets the most accurate.
 inline const Candidate* mostAccurateWithin(const std::vector<Candidate>& candidates, double seconds,
-                                           double error) {
+                                           double error, const Candidate** mostAccurate) {
   const Candidate* best = bestWithin(
       candidates, seconds, error, [](const auto& a, const auto& b) { return a.error < b.error; });
+  *mostAccurate = best;
   if (!best) return nullptr;
   const Candidate* fastest = best;
   for (const Candidate& c : candidates)
@@ -257,8 +261,11 @@ inline void choose(const Budget& budget, Plan& plan) {
   const std::vector<Candidate> pool = betterThanBlack(plan.candidates);
   const bool errorAsked = !std::isnan(budget.error);
   const double target = errorAsked ? budget.error : INFINITY;
-  const Candidate* best = errorAsked ? bestWithin(pool, budget.seconds, target, faster)
-                                     : mostAccurateWithin(pool, budget.seconds, target);
+  const Candidate* mostAccurate = nullptr;
+  const Candidate* best = errorAsked
+                              ? bestWithin(pool, budget.seconds, target, faster)
+                              : mostAccurateWithin(pool, budget.seconds, target, &mostAccurate);
+  if (best && mostAccurate && best != mostAccurate) plan.mostAccurate = *mostAccurate;
   plan.meetsBudget = best != nullptr;
   double leastError = INFINITY;
   for (const Candidate& c : pool) leastError = std::min(leastError, c.error);
@@ -326,6 +333,13 @@ inline Fit sceneFit(const technique::Registry& registry, const technique::SceneD
     }
     return "";
   };
+}
+
+/// "; technique: why" for every technique the plan left out: why there is no choice.
+inline std::string exclusionText(const Plan& plan) {
+  std::string why;
+  for (const auto& e : plan.excluded) why += "; " + e;
+  return why;
 }
 
 /// Whether the terms call for single scattering and the chosen technique leaves it out.

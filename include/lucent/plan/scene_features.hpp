@@ -150,6 +150,13 @@ inline void setLightFeatures(const technique::SceneDescription& scene, const glm
 }
 }  // namespace detail
 
+/// What one pixel of `camera` covers at `point`, across (0 at the eye).
+inline double pixelFootprint(const scene::PinholeCamera& camera, const glm::dvec3& point) {
+  return 2 * glm::length(camera.eye - point) *
+         std::tan(0.5 * camera.verticalFovDeg * optics::kPi / 180) /
+         double(std::max(1, camera.height));
+}
+
 /// The features of a scene shaded at `request`; `camera` gives the viewer and the pixel size
 /// (null: a per-vertex request, the pixel is the mean edge and the light's side is unknown).
 inline SceneFeatures sceneFeatures(const technique::SceneDescription& scene,
@@ -164,8 +171,7 @@ inline SceneFeatures sceneFeatures(const technique::SceneDescription& scene,
   std::optional<glm::dvec3> towardViewer;
   if (camera) {
     const double distance = glm::length(camera->eye - bounds.center());
-    f.pixelMm = 2 * distance * std::tan(0.5 * camera->verticalFovDeg * optics::kPi / 180) /
-                double(std::max(1, camera->height));
+    f.pixelMm = pixelFootprint(*camera, bounds.center());
     if (distance > 0) towardViewer = (camera->eye - bounds.center()) / distance;
   } else {
     f.pixelMm = technique::meanEdgeLength(scene.mesh);
