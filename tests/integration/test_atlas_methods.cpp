@@ -109,7 +109,7 @@ TEST_CASE("Eq. 10 weights are unbiased: the mean over seeds equals the exhaustiv
   glm::dvec3 exact(0);
   for (std::size_t i = 0; i < irr.power.size(); ++i)
     if (irr.importance[i] > 0)
-      exact += glm::dvec3(irr.power[i]) * d.rd(glm::length(glm::dvec3(irr.position[i]) - xo));
+      exact += glm::dvec3(irr.power[i]) * d.rd(glm::length(glm::dvec3(irr.surface->position[i]) - xo));
   for (const auto sampler : {atlas::TexelSampler::Mipmap, atlas::TexelSampler::RowMajor}) {
     atlas::SamplingOptions so;
     so.samples = 64;

@@ -65,8 +65,8 @@ std::vector<KnobSpec> concat(Lists... lists) {
 }
 
 /// The chart atlas (prepare).
-inline atlas::TextureAtlas buildAtlas(const SceneDescription& scene, const KnobValues& knobs,
-                                      Statistics& stats) {
+inline atlas::TextureAtlas buildChartAtlas(const SceneDescription& scene, const KnobValues& knobs,
+                                           Statistics& stats) {
   atlas::AtlasOptions ao;
   ao.resolution = int(knobs.integer("atlas-resolution"));
   ao.maxNormalAngleDeg = knobs.real("chart-angle");
@@ -87,14 +87,28 @@ inline atlas::TextureAtlas buildAtlas(const SceneDescription& scene, const KnobV
   return a;
 }
 
+/// The chart atlas and the surface under it (prepare): what depends on the mesh only, so a frame
+/// redoes only the light.
+inline std::shared_ptr<const atlas::AtlasSurface> buildAtlas(const SceneDescription& scene,
+                                                             const KnobValues& knobs,
+                                                             Statistics& stats) {
+  const atlas::TextureAtlas charts = buildChartAtlas(scene, knobs, stats);
+  auto surface = stats.timePrepare("atlas_surface", [&] {
+    return atlas::buildAtlasSurface(charts, scene.mesh, scene.vertexNormals, scene.parallelFor);
+  });
+  const std::size_t texels = std::size_t(charts.resolution) * std::size_t(charts.resolution);
+  stats.bytes += double(texels * 3 * sizeof(glm::vec3) +
+                        surface->owned.size() * (2 * sizeof(glm::vec3) + sizeof(float) + 4));
+  return surface;
+}
+
 /// Irradiance into the atlas and the N importance samples (a frame's first stages).
-inline atlas::ImportanceSamples drawSamples(const atlas::TextureAtlas& a,
-                                            const SceneDescription& scene, const KnobValues& knobs,
-                                            Statistics& stats) {
+inline atlas::ImportanceSamples drawSamples(
+    const std::shared_ptr<const atlas::AtlasSurface>& surface, const SceneDescription& scene,
+    const KnobValues& knobs, Statistics& stats) {
   const auto irradiance = stats.timeFrame("irradiance", [&] {
-    return atlas::renderIrradianceAtlas(a, scene.mesh, scene.vertexNormals, scene.lights,
-                                        *scene.caster, irradianceSettings(scene, knobs),
-                                        scene.parallelFor, scene.stage("irradiance atlas"));
+    return atlas::lightAtlas(surface, scene.lights, *scene.caster, irradianceSettings(scene, knobs),
+                             scene.parallelFor, scene.stage("irradiance atlas"));
   });
   stats.figures["transmitted_power"] =
       irradiance.totalPower.x + irradiance.totalPower.y + irradiance.totalPower.z;
@@ -193,7 +207,7 @@ class Tsis final : public Prepared {
 
  private:
   KnobValues mKnobs;
-  atlas::TextureAtlas mAtlas;
+  std::shared_ptr<const atlas::AtlasSurface> mAtlas;
 };
 
 class Hybrid final : public Prepared {
@@ -221,7 +235,7 @@ class Hybrid final : public Prepared {
 
  private:
   KnobValues mKnobs;
-  atlas::TextureAtlas mAtlas;
+  std::shared_ptr<const atlas::AtlasSurface> mAtlas;
 };
 
 class Tsm final : public Prepared {
