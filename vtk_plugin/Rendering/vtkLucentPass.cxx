@@ -67,7 +67,7 @@ const lt::Registry& registry() {
 std::vector<const lt::Technique*> twins() {
   std::vector<const lt::Technique*> out;
   for (const auto& t : registry().all())
-    if (t.capabilities.gpuTwin == "vtkLucentPass") out.push_back(&t);
+    if (t.capabilities.gpuTwin == kPassTwin) out.push_back(&t);
   return out;
 }
 const lt::Technique* twinNamed(const std::string& name) {
@@ -114,6 +114,12 @@ std::vector<vtkActor*> opaqueActors(vtkRenderer* renderer) {
 }
 
 /// An actor whose data is marked as an inner body (lucentPolyDataMesh.h's kInnerMaterialArray).
+/// What an inner-body actor was built from, for the keys of what depends on it.
+std::string innerBodyKey(vtkActor* actor) {
+  return " inner " + std::to_string(actor->GetMapper()->GetInputDataObject(0, 0)->GetMTime()) +
+         "/" + std::to_string(actor->GetMTime());
+}
+
 bool isInnerBody(vtkActor* actor) {
   return !lucent::vtkadapter::innerMaterialOf(actor->GetMapper()->GetInputDataObject(0, 0)).empty();
 }
@@ -147,7 +153,7 @@ std::vector<lt::Inclusion> innerBodiesWithin(const vtkLucentSurface& surface,
       inc.description = material->name + " inner body";
       out.push_back(std::move(inc));
     }
-    key += " inner " + std::to_string(data->GetMTime()) + "/" + std::to_string(actor->GetMTime());
+    key += innerBodyKey(actor);
   }
   return out;
 }
@@ -207,8 +213,7 @@ struct vtkLucentPass::FrameSetup {
   int samples = 0, samplesPerRow = 0;  ///< tsis's, of the actor being shaded
   vtkMatrix4x4* worldToClip = nullptr;
   float camera[3] = {};
-  float totalDiffuseReflectance[3] = {}, exitScale = 1;  ///< diffuse-brdf's, of the actor
-  glm::mat4 worldToLight{1.0f};                          ///< of the actor being shaded
+  glm::mat4 worldToLight{1.0f};  ///< of the actor being shaded
 };
 
 vtkLucentPass::vtkLucentPass() : Impl(new Internals) { this->RefreshTsisKnobs(); }
@@ -744,19 +749,8 @@ bool vtkLucentPass::ShadeActor(vtkOpenGLRenderWindow* window, const lt::Techniqu
                                int height) {
   if (twin.name == "taulut")
     return this->ShadeTauLut(window, twin, knobs, surface, inner, frame, width, height);
-  if (twin.name == "diffuse-brdf") {
-    lucent::optics::Profile<double> profile;
-    try {
-      profile = lt::detail::profileOf<double>(frame.material, knobs);
-    } catch (const std::exception& e) {
-      this->ReportError(std::string("vtkLucentPass (diffuse-brdf): ") + e.what());
-      return false;
-    }
-    const glm::dvec3 total = profile.total();
-    for (int c = 0; c < 3; ++c) frame.totalDiffuseReflectance[c] = float(total[c]);
-    frame.exitScale = float(profile.exitScale);
-    return this->ShadeDiffuseBrdf(window, surface, frame, width, height);
-  }
+  if (twin.name == "diffuse-brdf")
+    return this->ShadeDiffuseBrdf(window, surface, knobs, frame, width, height);
   frame.samples = int(knobs.integer("samples"));
   return this->UpdateProfile(window, surface, knobs, frame) &&
          this->ShadeTsis(window, surface, frame, width, height);
@@ -777,15 +771,24 @@ bool vtkLucentPass::ShadeTsis(vtkOpenGLRenderWindow* window, vtkLucentSurface* s
 }
 
 bool vtkLucentPass::ShadeDiffuseBrdf(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
-                                     FrameSetup& frame, int width, int height) {
+                                     const lt::KnobValues& knobs, FrameSetup& frame, int width,
+                                     int height) {
   Internals& I = *this->Impl;
+  lucent::optics::Profile<double> profile;  // Rd_total and the exit scale, as the CPU takes them
+  try {
+    profile = lt::detail::profileOf<double>(frame.material, knobs);
+  } catch (const std::exception& e) {
+    this->ReportError(std::string("vtkLucentPass (diffuse-brdf): ") + e.what());
+    return false;
+  }
+  const glm::vec3 total(profile.total());
   if (!this->RenderLightDepth(window, surface, frame)) return false;
   vtkShaderProgram* program = this->BeginPerPixelStage(window, I.diffuseShadeFs, width, height);
   if (program) {
     this->SetLightUniforms(program, frame);
     program->SetUniform3f("cameraPosition", frame.camera);
-    program->SetUniform3f("totalDiffuseReflectance", frame.totalDiffuseReflectance);
-    program->SetUniformf("exitScale", frame.exitScale);
+    program->SetUniform3f("totalDiffuseReflectance", glm::value_ptr(total));
+    program->SetUniformf("exitScale", float(profile.exitScale));
     program->SetUniformMatrix("worldToClip", frame.worldToClip);
     surface->Draw(program, vtkLucentSurface::Shade);
     I.lightDepth->Deactivate();
@@ -847,9 +850,7 @@ bool vtkLucentPass::PlanActor(vtkRenderer* renderer, vtkLucentSurface* surface,
                       std::to_string(this->MaxError) + " " + std::to_string(this->AtlasResolution);
     for (int c = 0; c < 3; ++c)
       key += " " + std::to_string(frame.towardLight[c]) + " " + std::to_string(frame.irradiance[c]);
-    for (vtkActor* actor : inner)
-      key += " " + std::to_string(actor->GetMapper()->GetInputDataObject(0, 0)->GetMTime()) + "/" +
-             std::to_string(actor->GetMTime());
+    for (vtkActor* actor : inner) key += innerBodyKey(actor);
     auto& [plannedFor, plan] = I.plans[surface];
     if (plannedFor != key || !plan.twin) {
       lt::SceneDescription scene;

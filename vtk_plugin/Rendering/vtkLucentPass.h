@@ -205,11 +205,13 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   /// Stages 0-3 of tsis's twin for one actor with `samples` importance samples.
   bool ShadeTsis(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface, FrameSetup& frame,
                  int width, int height);
-  /// diffuse-brdf's twin: depth from the light, then every pixel Rd_total E (no samples).
-  bool ShadeDiffuseBrdf(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface, FrameSetup& frame,
-                        int width, int height);
   void Composite(vtkOpenGLRenderWindow* window);
 #ifndef __VTK_WRAP__
+  /// diffuse-brdf's twin: depth from the light, then every pixel Rd_total E (no samples), with
+  /// Rd_total of the profile `knobs` name.
+  bool ShadeDiffuseBrdf(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
+                        const lucent::technique::KnobValues& knobs, FrameSetup& frame, int width,
+                        int height);
   /// taulut's twin for one actor: prepare (when its geometry or prepare knobs changed), light
   /// view, per-pixel sum.
   bool ShadeTauLut(vtkOpenGLRenderWindow* window, const lucent::technique::Technique& taulut,
