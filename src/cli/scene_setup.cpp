@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 
+#include <lucent/scene/environment_resample.hpp>
 #include <lucent/scene/mesh_check.hpp>
 #include <lucent/scene/shapes.hpp>
 #include <lucent/technique/transfer_function.hpp>
@@ -64,6 +65,19 @@ void checkEnvironment(const Args& args, const std::string& text, const image::Im
   }
 }
 
+/// A cube map when the image has the shape of a layout of scene/cube_layouts.hpp (6N x N, N x 6N,
+/// 4N x 3N, 3N x 4N); otherwise a lat-long probe (2:1 usually, though any shape maps).
+scene::EnvironmentLight environmentFromImage(const image::Image& img) {
+  auto radiance = [&](int x, int y) { return glm::vec3(img.at(x, y)); };
+  if (const auto layout = scene::cube::detectLayout(img.width, img.height))
+    return scene::cubeFromImage(*layout, scene::cube::faceSize(*layout, img.width, img.height),
+                                radiance);
+  scene::EnvironmentLight env;
+  env.width = img.width, env.height = img.height;
+  for (const auto& p : img.pixels) env.radiance.push_back(glm::vec3(p));
+  return env;
+}
+
 scene::Light parseLight(const Args& args, const std::string& text, double diag,
                         std::string& description) {
   const auto colon = text.find(':');
@@ -114,13 +128,12 @@ scene::Light parseLight(const Args& args, const std::string& text, double diag,
     }
     const image::Image img = io::readExr(first);
     checkEnvironment(args, text, img);
-    env.width = img.width;
-    env.height = img.height;
+    env = environmentFromImage(img);
     env.source = first;
     env.scale = second.empty() ? 1.0 : parseNumber(second, what);
     checkLightValues(args, text, glm::dvec3(env.scale));
-    for (const auto& p : img.pixels) env.radiance.push_back(glm::vec3(p));
-    description = "environment " + first;
+    description = "environment " + first +
+                  (env.layout == scene::EnvironmentLayout::Cube ? " (cube map)" : "");
     return env;
   }
   args.fail("--light '" + text + "': unknown kind '" + kind +

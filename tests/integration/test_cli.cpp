@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include <lucent/scene/environment_resample.hpp>
 #include <lucent/scene/mesh_check.hpp>
 #include <lucent/scene/shapes.hpp>
 
@@ -809,4 +810,56 @@ TEST_CASE(
   CHECK(alone.code == 2);
   CHECK(contains(alone.err, "give it with --volume"));
   CHECK_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
+TEST_CASE("An environment given as a cube-map cross lights the object as the lat-long probe it came from") {
+  lucent::test::TempDir dir;
+  // A sky brighter above and towards +x, as a 64 x 32 lat-long probe.
+  lucent::scene::EnvironmentLight probe;
+  probe.width = 64, probe.height = 32;
+  lucent::image::Image latLong(64, 32);
+  for (int row = 0; row < 32; ++row)
+    for (int col = 0; col < 64; ++col) {
+      const double theta = 3.14159265358979 * (row + 0.5) / 32, phi = 6.28318530717959 * (col + 0.5) / 64;
+      const double x = std::sin(theta) * std::sin(phi), y = std::cos(theta);
+      const float v = float(0.2 + std::max(0.0, y) + 0.5 * std::max(0.0, x));
+      latLong.at(col, row) = glm::vec4(v, 0.8f * v, 0.6f * v, 1);
+      probe.radiance.push_back(glm::vec3(latLong.at(col, row)));
+    }
+  lucent::io::writeExr(dir / "sky.exr", latLong);
+  const int size = 16;
+  const lucent::scene::EnvironmentLight cubeMap = lucent::scene::latLongToCube(probe, size);
+  lucent::image::Image cross(4 * size, 3 * size);
+  for (int face = 0; face < 6; ++face)
+    for (int row = 0; row < size; ++row)
+      for (int col = 0; col < size; ++col) {
+        const auto xy = lucent::scene::cube::imagePixel(lucent::scene::cube::ImageLayout::HorizontalCross,
+                                                        size, face, row, col);
+        cross.at(xy[0], xy[1]) = glm::vec4(cubeMap.radiance[(std::size_t(face) * size + row) * size + col], 1);
+      }
+  lucent::io::writeExr(dir / "sky-cross.exr", cross);
+  const std::string common = "render --shape sphere --size-mm 10 --width 32 --height 32 --quiet ";
+  REQUIRE(lucentCli(common + "--light env:" + dir / "sky.exr --out " + dir / "a.exr", dir).code == 0);
+  const Run b = lucentCli(common + "--light env:" + dir / "sky-cross.exr --out " + dir / "b.exr", dir);
+  REQUIRE(b.code == 0);
+  auto relativeRms = [&](const std::string& a, const std::string& b) {
+    const Run c = lucentCli("compare --json " + dir / a + " " + dir / b, dir);
+    REQUIRE(c.code == 0);
+    const auto at = c.out.find("\"relative_rms\": ");
+    REQUIRE(at != std::string::npos);
+    return std::atof(c.out.c_str() + at + 16);
+  };
+  const double sameSky = relativeRms("a.exr", "b.exr");
+  MESSAGE("lat-long against its cube cross: relative RMS ", sameSky);
+  CHECK(sameSky < 0.01);
+  // The control: the cross's faces mirrored left to right puts the bright side at -x, which the test
+  // must see.
+  lucent::image::Image mirrored(cross.width, cross.height);
+  for (int y = 0; y < cross.height; ++y)
+    for (int x = 0; x < cross.width; ++x) mirrored.at(x, y) = cross.at(cross.width - 1 - x, y);
+  lucent::io::writeExr(dir / "sky-mirrored.exr", mirrored);
+  REQUIRE(lucentCli(common + "--light env:" + dir / "sky-mirrored.exr --out " + dir / "m.exr", dir).code == 0);
+  const double mirroredSky = relativeRms("a.exr", "m.exr");
+  MESSAGE("against the mirrored cross: relative RMS ", mirroredSky);
+  CHECK(mirroredSky > 3 * sameSky);
 }

@@ -133,10 +133,8 @@ inline void setLightFeatures(const technique::SceneDescription& scene, const glm
       e = luminance(dl->irradiance);
       toward = glm::normalize(dl->towardLight);
     } else if (const auto* env = std::get_if<scene::EnvironmentLight>(&light)) {
-      double sum = 0;
-      for (const auto& r : env->radiance) sum += luminance(glm::dvec3(r));
-      // pi x the mean radiance: exact for a uniform environment, the texel mean otherwise.
-      if (!env->radiance.empty()) e = env->scale * optics::kPi * sum / double(env->radiance.size());
+      // pi x the mean radiance (over solid angle): the irradiance a uniform environment would give.
+      e = optics::kPi * luminance(env->meanRadiance());
       total += e, behind += 0.5 * e, environment += e;
       continue;
     }
