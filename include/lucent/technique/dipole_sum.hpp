@@ -13,6 +13,7 @@
 #include "../optics/dipole.hpp"
 #include "../reference/dipole_truth.hpp"
 #include "../reference/jensen_buhler.hpp"
+#include "single_scattering_term.hpp"
 #include "technique.hpp"
 #include "validity.hpp"
 
@@ -181,7 +182,7 @@ inline Technique referenceTechnique() {
                                    });
                                  });
   };
-  return t;
+  return withSingleScattering(std::move(t));
 }
 
 inline Technique jensenBuhlerTechnique() {
@@ -217,7 +218,7 @@ inline Technique jensenBuhlerTechnique() {
                                    });
                                  });
   };
-  return t;
+  return withSingleScattering(std::move(t));
 }
 
 }  // namespace lucent::technique

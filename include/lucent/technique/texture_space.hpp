@@ -16,6 +16,7 @@
 #include "../atlas/texture_atlas.hpp"
 #include "../atlas/tsis_evaluator.hpp"
 #include "../reference/vertex_radiosity.hpp"
+#include "single_scattering_term.hpp"
 #include "technique.hpp"
 #include "validity.hpp"
 
@@ -325,7 +326,7 @@ inline Technique tsisTechnique() {
   t.prepare = [](const SceneDescription& scene, const KnobValues& knobs, Statistics& stats) {
     return std::make_unique<detail::Tsis>(scene, knobs, stats);
   };
-  return t;
+  return withSingleScattering(std::move(t));
 }
 
 inline Technique hybridTechnique() {
@@ -360,7 +361,7 @@ inline Technique hybridTechnique() {
   t.prepare = [](const SceneDescription& scene, const KnobValues& knobs, Statistics& stats) {
     return std::make_unique<detail::Hybrid>(scene, knobs, stats);
   };
-  return t;
+  return withSingleScattering(std::move(t));
 }
 
 inline Technique tsmTechnique() {
