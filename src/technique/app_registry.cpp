@@ -8,6 +8,7 @@ Registry& appRegistry() {
   static Registry registry = [] {
     Registry r;
     addCoreTechniques(r);
+    r.add(prtTechnique());
 #ifdef LUCENT_HAVE_TETGEN
     r.add(quadgraphTechnique());
 #endif

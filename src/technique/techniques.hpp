@@ -10,6 +10,8 @@ namespace lucent::technique {
 Technique quadgraphTechnique();  ///< quadgraph_technique.cpp (links TetGen, AGPL)
 #endif
 
+Technique prtTechnique();  ///< prt_technique.cpp (the phase function's SVD links Eigen)
+
 /// Built on first use; tests may add techniques of their own before running a front end.
 Registry& appRegistry();
 

@@ -22,41 +22,47 @@ enum class Selection {
                  ///< coarse terms a smooth transport vector weighs most (Ng et al. 2003, Sec. 5)
 };
 
-/// The kept coefficients, sorted by index.
-struct SparseVector {
+/// The kept coefficients, sorted by index: scalar (a grey irradiance transport vector) or RGB.
+template <class V>
+struct Sparse {
   std::vector<std::uint32_t> index;
-  std::vector<glm::vec3> value;
+  std::vector<V> value;
   std::size_t size() const { return index.size(); }
 };
+using SparseVector = Sparse<glm::vec3>;
+using SparseScalars = Sparse<float>;
 
+inline double largestChannel(float c) { return std::abs(double(c)); }
 inline double largestChannel(const glm::vec3& c) {
   return std::max(std::abs(double(c.x)), std::max(std::abs(double(c.y)), std::abs(double(c.z))));
 }
 
 /// The k coefficients of `dense` (6 faces of faceSize^2 Haar coefficients) with the largest scores;
-/// ties and zeros are dropped first. k >= the count keeps every non-zero coefficient.
-inline SparseVector keepLargest(const std::vector<glm::vec3>& dense, int faceSize, std::size_t k,
-                                Selection selection = Selection::Magnitude) {
+/// zeros are never kept. k >= the count keeps every non-zero coefficient.
+template <class V>
+Sparse<V> keepLargest(const std::vector<V>& dense, int faceSize, std::size_t k,
+                      Selection selection = Selection::Magnitude) {
   const std::size_t face = std::size_t(faceSize) * faceSize;
   std::vector<double> score(dense.size());
-  for (std::size_t i = 0; i < dense.size(); ++i) {
-    const std::size_t inFace = i % face;
-    const int row = int(inFace / faceSize), column = int(inFace % faceSize);
-    const double side = supportSide(row, column, faceSize);
-    score[i] =
-        largestChannel(dense[i]) * (selection == Selection::AreaWeighted ? side * side : 1.0);
-  }
   std::vector<std::uint32_t> order;
-  for (std::size_t i = 0; i < dense.size(); ++i)
+  for (std::size_t i = 0; i < dense.size(); ++i) {
+    double side = 1;
+    if (selection == Selection::AreaWeighted) {
+      const std::size_t inFace = i % face;
+      side = supportSide(int(inFace / faceSize), int(inFace % faceSize), faceSize);
+    }
+    score[i] = largestChannel(dense[i]) * side * side;
     if (score[i] > 0) order.push_back(std::uint32_t(i));
+  }
   if (k < order.size()) {
     std::nth_element(order.begin(), order.begin() + std::ptrdiff_t(k), order.end(),
                      [&](std::uint32_t a, std::uint32_t b) { return score[a] > score[b]; });
     order.resize(k);
   }
   std::sort(order.begin(), order.end());
-  SparseVector out;
+  Sparse<V> out;
   out.index = order;
+  out.value.reserve(order.size());
   for (std::uint32_t i : order) out.value.push_back(dense[i]);
   return out;
 }

@@ -142,6 +142,28 @@ class SingleScattering {
     return sum * (optics::fresnelTransmittance(cosOut, eta) / (eta * eta));
   }
 
+  /// Follows the ray from x along w (inside) through the boundary's reflections; at each place it
+  /// can leave unblocked, calls exit(direction outside, e^{-sigma_t s} Ft times the reflectances
+  /// before): the share of light arriving from that direction outside that reaches x along -w.
+  template <class Exit>
+  void forEachExit(glm::dvec3 x, glm::dvec3 w, Exit&& exit) const {
+    glm::dvec3 carried(1);
+    for (int bounce = 0; bounce < kMaxReflections; ++bounce) {
+      const auto wall = mCaster.intersect(x, w, 0, std::numeric_limits<double>::infinity());
+      if (!wall) break;
+      for (int c = 0; c < 3; ++c) carried[c] *= std::exp(-mMedium.sigmaT[c] * wall->t);
+      const Bounce b = reflectInside(x, w, *wall);
+      if (b.reflectance < 1 &&
+          !mCaster.occluded(b.exitPoint, b.outside, 0, std::numeric_limits<double>::infinity()))
+        exit(b.outside, carried * (1 - b.reflectance));
+      carried *= b.reflectance;
+      if (std::max(carried.x, std::max(carried.y, carried.z)) < kNegligible) break;
+      x = b.origin, w = b.direction;
+    }
+  }
+
+  const HomogeneousScattering& medium() const { return mMedium; }
+
  private:
   static constexpr int kMaxReflections = 16;
   static constexpr double kNegligible = 1e-4;
@@ -213,21 +235,12 @@ class SingleScattering {
 
   /// The environment's light arriving at x from direction w (inside): e^{-sigma_t s} Ft L_env at
   /// each exit, times the reflectances of the walls before it.
-  glm::dvec3 environmentAlong(glm::dvec3 x, glm::dvec3 w,
+  glm::dvec3 environmentAlong(const glm::dvec3& x, const glm::dvec3& w,
                               const scene::EnvironmentLight& env) const {
-    glm::dvec3 carried(1), sum(0);
-    for (int bounce = 0; bounce < kMaxReflections; ++bounce) {
-      const auto wall = mCaster.intersect(x, w, 0, std::numeric_limits<double>::infinity());
-      if (!wall) break;
-      for (int c = 0; c < 3; ++c) carried[c] *= std::exp(-mMedium.sigmaT[c] * wall->t);
-      const Bounce b = reflectInside(x, w, *wall);
-      if (b.reflectance < 1 &&
-          !mCaster.occluded(b.exitPoint, b.outside, 0, std::numeric_limits<double>::infinity()))
-        sum += carried * (1 - b.reflectance) * env.lookup(b.outside);
-      carried *= b.reflectance;
-      if (std::max(carried.x, std::max(carried.y, carried.z)) < kNegligible) break;
-      x = b.origin, w = b.direction;
-    }
+    glm::dvec3 sum(0);
+    forEachExit(x, w, [&](const glm::dvec3& outside, const glm::dvec3& weight) {
+      sum += weight * env.lookup(outside);
+    });
     return sum;
   }
 

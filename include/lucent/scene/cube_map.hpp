@@ -66,13 +66,17 @@ inline double cornerSolidAngle(double x, double y) {
   return std::atan2(x * y, std::sqrt(1 + x * x + y * y));
 }
 
+/// The exact solid angle of face rectangle [s0, s1] x [t0, t1].
+inline double rectangleSolidAngle(double s0, double s1, double t0, double t1) {
+  return cornerSolidAngle(s1, t1) - cornerSolidAngle(s0, t1) - cornerSolidAngle(s1, t0) +
+         cornerSolidAngle(s0, t0);
+}
+
 /// The exact solid angle of texel (row, column) of a face `size` texels across (the same on all
 /// faces).
 inline double texelSolidAngle(int row, int column, int size) {
-  const double s0 = edgeCoordinate(column, size), s1 = edgeCoordinate(column + 1, size);
-  const double t0 = edgeCoordinate(row, size), t1 = edgeCoordinate(row + 1, size);
-  return cornerSolidAngle(s1, t1) - cornerSolidAngle(s0, t1) - cornerSolidAngle(s1, t0) +
-         cornerSolidAngle(s0, t0);
+  return rectangleSolidAngle(edgeCoordinate(column, size), edgeCoordinate(column + 1, size),
+                             edgeCoordinate(row, size), edgeCoordinate(row + 1, size));
 }
 
 /// The unit direction through the centre of texel `index` (face * size^2 + row * size + column).

@@ -53,43 +53,85 @@ inline void splatBox(std::vector<glm::dvec3>& flux, int size, const cube::FacePo
 }
 }  // namespace detail
 
-/// The cube map, `size` texels across a face, of a lat-long environment. Each lat-long pixel is cut
-/// into equal-solid-angle cells (uniform in phi and cos theta) whose flux L dOmega is spread over
-/// the texels under a square of the cell's area on the face plane; a texel's radiance is its flux
-/// over its exact solid angle. The integral of the radiance over the sphere is kept to rounding (a
-/// single bright pixel included); the scale is carried over.
-inline EnvironmentLight latLongToCube(const EnvironmentLight& latLong, int size) {
-  EnvironmentLight out;
-  out.layout = EnvironmentLayout::Cube;
-  out.width = size, out.height = cube::kFaces * size;
-  out.scale = latLong.scale, out.source = latLong.source;
-  std::vector<glm::dvec3> flux(out.texelCount(), glm::dvec3(0));
-  const int split = splatSubdivision(latLong, size);
-  const double w = latLong.width, h = latLong.height;
-  for (int row = 0; row < latLong.height; ++row) {
+/// A direction turned by `angle` radians about +y (the up axis of the lat-long layout).
+inline glm::dvec3 turnAboutY(const glm::dvec3& d, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * d.x + s * d.z, d.y, -s * d.x + c * d.z};
+}
+
+namespace detail {
+/// Splats every source cell: (centre direction, solid angle, radiance) of the lat-long pixels cut
+/// into equal-solid-angle cells (uniform in phi and cos theta).
+template <class Splat>
+void forEachLatLongCell(const EnvironmentLight& env, int split, Splat&& splat) {
+  const double w = env.width, h = env.height;
+  for (int row = 0; row < env.height; ++row) {
     const double cos0 = std::cos(optics::kPi * row / h),
                  cos1 = std::cos(optics::kPi * (row + 1) / h);
-    for (int col = 0; col < latLong.width; ++col) {
-      const std::size_t pixel = std::size_t(row) * latLong.width + col;
-      const double cellSolidAngle = latLong.texelSolidAngle(pixel) / (split * split);
-      const glm::dvec3 cellFlux = glm::dvec3(latLong.radiance[pixel]) * cellSolidAngle;
+    for (int col = 0; col < env.width; ++col) {
+      const std::size_t pixel = std::size_t(row) * env.width + col;
+      const double cellSolidAngle = env.texelSolidAngle(pixel) / (split * split);
       for (int a = 0; a < split; ++a) {
         const double cosTheta = cos0 + (a + 0.5) / split * (cos1 - cos0);
         const double sinTheta = std::sqrt(std::max(0.0, 1 - cosTheta * cosTheta));
         for (int b = 0; b < split; ++b) {
           const double phi = 2 * optics::kPi * (col + (b + 0.5) / split) / w;
-          const glm::dvec3 d(sinTheta * std::sin(phi), cosTheta, -sinTheta * std::cos(phi));
-          const cube::FacePoint p = cube::facePoint(d);
-          const double r2 = 1 + p.s * p.s + p.t * p.t;
-          detail::splatBox(flux, size, p, cellSolidAngle * r2 * std::sqrt(r2), cellFlux);
+          splat(glm::dvec3(sinTheta * std::sin(phi), cosTheta, -sinTheta * std::cos(phi)),
+                cellSolidAngle, env.radiance[pixel]);
         }
       }
     }
+  }
+}
+
+/// The same for a cube map's texels cut into split x split face rectangles.
+template <class Splat>
+void forEachCubeCell(const EnvironmentLight& env, int split, Splat&& splat) {
+  const int n = env.width;
+  const double cell = 2.0 / (double(n) * split);
+  for (int face = 0; face < cube::kFaces; ++face)
+    for (int row = 0; row < n * split; ++row)
+      for (int col = 0; col < n * split; ++col) {
+        const double s0 = -1 + col * cell, t0 = -1 + row * cell;
+        splat(glm::normalize(cube::faceDirection(face, s0 + 0.5 * cell, t0 + 0.5 * cell)),
+              cube::rectangleSolidAngle(s0, s0 + cell, t0, t0 + cell),
+              env.radiance[(std::size_t(face) * n + row / split) * n + col / split]);
+      }
+}
+}  // namespace detail
+
+/// The cube map, `size` texels across a face, of an environment in either layout, turned by
+/// `angle` radians about +y. Each source texel is cut into cells whose flux L dOmega is spread over
+/// the texels under a square of the cell's area on the face plane; a texel's radiance is its flux
+/// over its exact solid angle. The integral of the radiance over the sphere is kept to rounding (a
+/// single bright texel included); the scale is carried over.
+inline EnvironmentLight resampleToCube(const EnvironmentLight& env, int size, double angle = 0) {
+  EnvironmentLight out;
+  out.layout = EnvironmentLayout::Cube;
+  out.width = size, out.height = cube::kFaces * size;
+  out.scale = env.scale, out.source = env.source;
+  std::vector<glm::dvec3> flux(out.texelCount(), glm::dvec3(0));
+  auto splat = [&](const glm::dvec3& d, double solidAngle, const glm::vec3& radiance) {
+    const cube::FacePoint p = cube::facePoint(angle == 0 ? d : turnAboutY(d, angle));
+    const double r2 = 1 + p.s * p.s + p.t * p.t;
+    detail::splatBox(flux, size, p, solidAngle * r2 * std::sqrt(r2),
+                     glm::dvec3(radiance) * solidAngle);
+  };
+  if (env.layout == EnvironmentLayout::Cube) {
+    // Source texels at most half the smallest target texel (2 / (3 size) on the face plane).
+    detail::forEachCubeCell(env, std::clamp(int(std::ceil(3.0 * size / env.width)), 1, 64), splat);
+  } else {
+    detail::forEachLatLongCell(env, splatSubdivision(env, size), splat);
   }
   out.radiance.resize(flux.size());
   for (std::size_t i = 0; i < flux.size(); ++i)
     out.radiance[i] = glm::vec3(flux[i] / out.texelSolidAngle(i));
   return out;
+}
+
+/// The cube map of a lat-long environment (resampleToCube, unturned).
+inline EnvironmentLight latLongToCube(const EnvironmentLight& latLong, int size) {
+  return resampleToCube(latLong, size);
 }
 
 /// The cube-map environment held by an image in `layout`, faces `size` across; `pixel(x, y)` reads

@@ -1,0 +1,263 @@
+// The "prt" technique: all-frequency wavelet PRT of translucency (Wang, Tran, Luebke 2005): prepare
+// precomputes the transport vectors (include/lucent/prt), a frame relights them under the scene's
+// environment, turned by the knob `rotate`. Compiled because the phase function's SVD uses Eigen.
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+#include <lucent/prt/relight.hpp>
+#include <lucent/technique/single_scattering_term.hpp>
+#include <lucent/technique/technique.hpp>
+#include <lucent/technique/validity.hpp>
+
+#include "../prt/phase_svd.hpp"
+#include "techniques.hpp"
+
+namespace lucent::technique {
+
+namespace {
+
+/// The precomputation's structures may not exceed this (checked before they are built).
+constexpr double kMaxPrecomputeBytes = 4.0 * (1u << 30);
+
+std::vector<KnobSpec> prtKnobs() {
+  return {
+      KnobSpec::integer("cube", 16, 4, 64,
+                        "environment cube-map face, texels across (a power of two; the paper's 32)",
+                        Phase::Prepare),
+      KnobSpec::integer("visibility-rays", 1, 1, 4, "rays per cube texel side at each sample",
+                        Phase::Prepare),
+      KnobSpec::real("fraction", "0.5", 0, kUnbounded, "",
+                     "sample spacing as a fraction of the smallest mean free path", Phase::Prepare,
+                     true),
+      KnobSpec::integer("max-samples", 50000, 1, 2000000,
+                        "surface-sample budget; a spacing from fraction is coarsened (with a "
+                        "warning) to respect it",
+                        Phase::Prepare),
+      KnobSpec::integer("sample-terms", 512, 0, 24576,
+                        "wavelet terms kept per sample's irradiance transport vector (0: all)",
+                        Phase::Prepare),
+      KnobSpec::integer("node-terms", 512, 0, 24576,
+                        "wavelet terms kept per hierarchy node (0: all)", Phase::Prepare),
+      KnobSpec::real("epsilon", "0.05", 0, kUnbounded, "",
+                     "hierarchy bound: a node is one source when area / distance^2 < epsilon "
+                     "(0: every sample)",
+                     Phase::Prepare),
+      KnobSpec::integer("vertex-terms", 768, 0, 24576,
+                        "wavelet terms kept per vertex transport vector (0: all)", Phase::Prepare),
+      KnobSpec::integer("light-terms", 256, 0, 24576,
+                        "wavelet terms of the environment kept per frame (0: all)"),
+      KnobSpec::choice("selection", {"area", "magnitude"},
+                       "which light terms are kept: the largest weighted by their support's area "
+                       "(Ng et al. 2003; better with few terms), or the largest"),
+      KnobSpec::real("rotate", "0", -360, 360, "degrees",
+                     "turn the environment about +y (a frame: no new precomputation)"),
+      KnobSpec::choice("single", {"on", "off"}, "add single scattering", Phase::Prepare),
+      KnobSpec::real("g", "0", -0.99, 0.99, "",
+                     "HG mean cosine; sigma_s = sigma_s' / (1 - g) keeps the reduced coefficient",
+                     Phase::Prepare),
+      KnobSpec::integer("phase-terms", 4, 1, 16,
+                        "separable terms of the phase function (K; one when g = 0)",
+                        Phase::Prepare),
+      KnobSpec::integer("phase-cube", 8, 2, 16,
+                        "phase table's cube, texels across (the paper's 16)", Phase::Prepare),
+      KnobSpec::integer("single-samples", 16, 1, 256,
+                        "single scattering: deterministic depths along -n per distinct channel",
+                        Phase::Prepare),
+      KnobSpec::integer("single-strata", 6, 1, 64,
+                        "single scattering: strata x 2 strata directions inside per depth",
+                        Phase::Prepare),
+      detail::profileKnob()};
+}
+
+/// The knobs as settings, and the checks that need more than a range.
+prt::PrtSettings prtSettings(const SceneDescription& scene, const KnobValues& knobs) {
+  prt::PrtSettings s;
+  s.transport.size = int(knobs.integer("cube"));
+  if (!prt::isPowerOfTwo(s.transport.size))
+    throw RequestError("technique 'prt' knob cube=" + knobs.text("cube") +
+                       " is not a power of two; use 4, 8, 16, 32 or 64");
+  s.transport.subdivision = int(knobs.integer("visibility-rays"));
+  s.transport.eta = scene.medium.material.eta;
+  s.transport.rayEpsilon = scene.rayEpsilon();
+  s.sampleTerms = std::size_t(knobs.integer("sample-terms"));
+  s.nodeTerms = std::size_t(knobs.integer("node-terms"));
+  s.vertexTerms = std::size_t(knobs.integer("vertex-terms"));
+  s.epsilon = knobs.real("epsilon");
+  s.single = knobs.text("single") == "on";
+  s.singleSampling.envSize = s.transport.size;
+  s.singleSampling.depthSamples = int(knobs.integer("single-samples"));
+  s.singleSampling.strata = int(knobs.integer("single-strata"));
+  s.singleSampling.rayEpsilon = scene.rayEpsilon();
+  return s;
+}
+
+/// Bytes the precomputation would hold at most, refused before any work above the limit.
+void checkPrecomputeBytes(std::size_t samples, std::size_t vertices, const prt::PrtSettings& s,
+                          std::size_t phaseTerms) {
+  const double texels = 6.0 * s.transport.size * s.transport.size;
+  auto terms = [texels](std::size_t k) { return k == 0 ? texels : std::min<double>(k, texels); };
+  const double bytes = double(samples) * 2 * terms(s.sampleTerms) * 8 +  // samples and nodes
+                       double(vertices) * (1 + phaseTerms) * terms(s.vertexTerms) * 10;
+  if (bytes <= kMaxPrecomputeBytes) return;
+  std::ostringstream why;
+  why << "technique 'prt' would hold about " << bytes / double(1u << 30) << " GiB of transport "
+      << "vectors (" << samples << " samples, " << vertices << " vertices); lower sample-terms, "
+      << "vertex-terms, cube or max-samples";
+  throw RequestError(why.str());
+}
+
+class PrtPrepared final : public Prepared {
+ public:
+  PrtPrepared(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats)
+      : mKnobs(knobs) {
+    const prt::PrtSettings s = prtSettings(scene, knobs);
+    mModel.cubeSize = s.transport.size;
+    mModel.eta = scene.medium.material.eta;
+    const double g = knobs.real("g");
+    mModel.phase = g == 0 ? prt::PhaseFactors::isotropic() : stats.timePrepare("phase_svd", [&] {
+      return prt::factorPhase(g, int(knobs.integer("phase-cube")),
+                              int(knobs.integer("phase-terms")))
+          .factors;
+    });
+    const auto profile = detail::profileOf<double>(scene.medium.material, knobs);
+    const double mfp = profile.minMeanFreePath();
+    const reference::SpacingChoice spacing = reference::chooseSpacing(
+        scene.mesh, mfp, knobs.real("fraction"), std::size_t(knobs.integer("max-samples")));
+    if (spacing.budgetLimited)
+      stats.warnings.push_back("prt: sample budget reached: spacing " +
+                               std::to_string(spacing.spacing) + " mm is coarser than " +
+                               knobs.text("fraction") + " x the mean free path; raise max-samples");
+    const std::size_t sampleCount = reference::countSurfaceSamples(scene.mesh, spacing.spacing);
+    checkPrecomputeBytes(sampleCount, scene.mesh.positions.size(), s,
+                         s.single ? mModel.phase.terms() : 0);
+    precompute(scene, s, profile, g, spacing.spacing, stats);
+  }
+
+  FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
+                    Statistics& stats) override {
+    std::vector<const scene::EnvironmentLight*> envs;
+    for (const auto& light : scene.lights)
+      if (const auto* env = std::get_if<scene::EnvironmentLight>(&light)) envs.push_back(env);
+    std::size_t kept = 0;
+    const std::vector<glm::vec3> light = stats.timeFrame("light_vector", [&] {
+      return prt::lightVector(envs, mModel.cubeSize, mKnobs.real("rotate") * optics::kPi / 180,
+                              std::size_t(mKnobs.integer("light-terms")),
+                              mKnobs.text("selection") == "area" ? prt::Selection::AreaWeighted
+                                                                 : prt::Selection::Magnitude,
+                              &kept);
+    });
+    stats.figures["light_terms_kept"] = double(kept);
+    const prt::VertexShading shading = stats.timeFrame(
+        "relight", [&] { return prt::relightVertices(mModel, light, scene.parallelFor); });
+    FrameResult out;
+    out.radiance =
+        stats.timeFrame("interpolate", [&] { return pointsRadiance(scene, request, shading); });
+    return out;
+  }
+
+ private:
+  void precompute(const SceneDescription& scene, const prt::PrtSettings& s,
+                  const optics::Profile<double>& profile, double g, double spacing,
+                  Statistics& stats) {
+    const reference::SurfaceSamples samples = stats.timePrepare(
+        "samples", [&] { return reference::buildSurfaceSamples(scene.mesh, spacing); });
+    std::vector<prt::SparseScalars> transports = stats.timePrepare("irradiance_transport", [&] {
+      return prt::sampleTransports(samples, *scene.caster, s, scene.parallelFor,
+                                   scene.stage("irradiance transport"));
+    });
+    const prt::TransportHierarchy hierarchy = stats.timePrepare("hierarchy", [&] {
+      return prt::TransportHierarchy(samples.position, samples.area, std::move(transports),
+                                     s.transport.size, s.nodeTerms, s.epsilon);
+    });
+    static const std::vector<scene::Light> kNoLights;  // the term only follows light inside
+    const reference::SingleScattering single(
+        detail::singleScatteringMedium(scene.medium.material, g), kNoLights, scene.mesh,
+        scene.vertexNormals, *scene.caster, reference::SingleScatteringSettings{});
+    std::vector<glm::dvec3> vertices(scene.mesh.positions.begin(), scene.mesh.positions.end());
+    auto rd = [&profile](double r) { return glm::dvec3(profile.rd(r)); };
+    stats.timePrepare("vertex_transport", [&] {
+      prt::vertexTransports(vertices, scene.vertexNormals, hierarchy, rd, profile.exitScale,
+                            s.single ? &single : nullptr, *scene.caster, s, mModel,
+                            scene.parallelFor, scene.stage("vertex transport"));
+      return 0;
+    });
+    stats.samples = double(samples.size());
+    stats.sampleUnit = "surface samples";
+    stats.bytes = double(mModel.bytes());
+    stats.figures["surface_samples"] = double(samples.size());
+    stats.figures["hierarchy_nodes"] = double(hierarchy.nodeCount());
+    stats.figures["hierarchy_bytes"] = double(hierarchy.bytes());
+    stats.figures["vertices"] = double(vertices.size());
+    stats.figures["bytes_per_vertex"] =
+        double(mModel.bytes()) / double(std::max<std::size_t>(1, vertices.size()));
+    stats.figures["phase_terms"] = double(mModel.phase.terms());
+  }
+
+  std::vector<glm::dvec3> pointsRadiance(const SceneDescription& scene, const ShadeRequest& request,
+                                         const prt::VertexShading& shading) const {
+    std::vector<glm::dvec3> radiance(request.points.size());
+    scene.parallelFor(radiance.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const reference::ShadingPoint& p = request.points[i];
+        const glm::dvec3 w(1 - p.u - p.v, p.u, p.v);
+        const glm::dvec3 normal =
+            scene::shadingNormal(scene.mesh, scene.vertexNormals, p.triangle, w);
+        const glm::dvec3 toEye =
+            request.camera ? glm::normalize(request.camera->eye - p.position) : normal;
+        radiance[i] =
+            prt::pointRadiance(mModel, shading, scene.mesh.triangles[p.triangle], w, normal, toEye);
+      }
+    });
+    return radiance;
+  }
+
+  KnobValues mKnobs;
+  prt::PrtModel mModel;
+};
+
+}  // namespace
+
+Technique prtTechnique() {
+  Technique t;
+  t.name = "prt";
+  t.summary =
+      "all-frequency wavelet PRT: multiple and single scattering precomputed per vertex, relit "
+      "under a (turning) environment by sparse Haar dot products";
+  t.paper =
+      "Wang, Tran, Luebke 2005, All-Frequency Interactive Relighting of Translucent Objects with "
+      "Single and Multiple Scattering, Sec. 3-4 (Eq. 6-11); Ng, Ramamoorthi, Hanrahan 2003; "
+      "Jensen, "
+      "Buhler 2002";
+  t.knobs = prtKnobs();
+  Capabilities& c = t.capabilities;
+  c.pointLights = false, c.directionalLights = false, c.environmentLights = true;
+  c.singleScattering = true;
+  c.dynamicLight = true, c.dynamicMaterial = false;
+  c.precomputeScaling = "O(samples x cube texels) rays + O(vertices x visited nodes x node terms)";
+  c.frameScaling = "O(vertices x vertex terms) + O(pixels)";
+  t.defaultSweep = {{"light-terms", {"16", "64", "256", "1024"}}};
+  t.referenceKnobs = {{"sample-terms", "0"},
+                      {"node-terms", "0"},
+                      {"vertex-terms", "0"},
+                      {"light-terms", "0"},
+                      {"epsilon", "0"}};
+  t.quickKnobs = {
+      {"cube", "8"}, {"max-samples", "4000"}, {"single-strata", "3"}, {"single-samples", "4"}};
+  t.model = kPhysicalModel;
+  t.validRange =
+      "homogeneous objects under environment light, optically thick as the dipole needs, static "
+      "shape";
+  t.validity = [](const SceneDescription& scene, const KnobValues&) {
+    if (scene.medium.heterogeneous() || !scene.inclusions.empty())
+      return std::string("prt precomputes a homogeneous object; use pathtrace or quadgraph");
+    return validity::opticallyThick(scene.mesh, scene.medium.material);
+  };
+  t.prepare = [](const SceneDescription& scene, const KnobValues& knobs,
+                 Statistics& stats) -> std::unique_ptr<Prepared> {
+    return std::make_unique<PrtPrepared>(scene, knobs, stats);
+  };
+  return t;
+}
+
+}  // namespace lucent::technique
