@@ -61,12 +61,12 @@ std::vector<KnobSpec> prtKnobs() {
                         Phase::Prepare),
       KnobSpec::integer("phase-cube", 8, 2, 16,
                         "phase table's cube, texels across (the paper's 16)", Phase::Prepare),
-      KnobSpec::integer("single-samples", 16, 1, 256,
-                        "single scattering: deterministic depths along -n per distinct channel",
+      KnobSpec::integer("single-cube", 8, 2, 64,
+                        "single scattering: its transport's cube, texels across (a power of two "
+                        "up to cube; spread onto cube)",
                         Phase::Prepare),
-      KnobSpec::integer("single-strata", 6, 1, 64,
-                        "single scattering: strata x 2 strata directions inside per depth",
-                        Phase::Prepare),
+      KnobSpec::integer("single-samples", 8, 1, 256,
+                        "single scattering: deterministic depths along -n", Phase::Prepare),
       detail::profileKnob()};
 }
 
@@ -86,8 +86,11 @@ prt::PrtSettings prtSettings(const SceneDescription& scene, const KnobValues& kn
   s.epsilon = knobs.real("epsilon");
   s.single = knobs.text("single") == "on";
   s.singleSampling.envSize = s.transport.size;
+  s.singleSampling.size = int(knobs.integer("single-cube"));
+  if (!prt::isPowerOfTwo(s.singleSampling.size))
+    throw RequestError("technique 'prt' knob single-cube=" + knobs.text("single-cube") +
+                       " is not a power of two; use 2, 4, 8, 16, 32 or 64");
   s.singleSampling.depthSamples = int(knobs.integer("single-samples"));
-  s.singleSampling.strata = int(knobs.integer("single-strata"));
   s.singleSampling.rayEpsilon = scene.rayEpsilon();
   return s;
 }
@@ -175,9 +178,11 @@ class PrtPrepared final : public Prepared {
         detail::singleScatteringMedium(scene.medium.material, g), kNoLights, scene.mesh,
         scene.vertexNormals, *scene.caster, reference::SingleScatteringSettings{});
     std::vector<glm::dvec3> vertices(scene.mesh.positions.begin(), scene.mesh.positions.end());
-    auto rd = [&profile](double r) { return glm::dvec3(profile.rd(r)); };
+    const reference::NearField near(samples.position,
+                                    std::vector<glm::dvec3>(samples.size(), glm::dvec3(0)),
+                                    samples.area, spacing);
     stats.timePrepare("vertex_transport", [&] {
-      prt::vertexTransports(vertices, scene.vertexNormals, hierarchy, rd, profile.exitScale,
+      prt::vertexTransports(vertices, scene.vertexNormals, hierarchy, profile, &near,
                             s.single ? &single : nullptr, *scene.caster, s, mModel,
                             scene.parallelFor, scene.stage("vertex transport"));
       return 0;
@@ -242,9 +247,12 @@ Technique prtTechnique() {
                       {"vertex-terms", "0"},
                       {"light-terms", "0"},
                       {"epsilon", "0"}};
-  t.quickKnobs = {
-      {"cube", "8"}, {"max-samples", "4000"}, {"single-strata", "3"}, {"single-samples", "4"}};
-  t.model = kPhysicalModel;
+  // The quick run leaves single scattering out so that it is measured against the dipole's truth
+  // (tests/integration/test_prt.cpp and test_single_scattering.cpp measure the single term).
+  t.quickKnobs = {{"cube", "8"}, {"max-samples", "4000"}, {"single", "off"}};
+  // Multiple scattering is the dipole's; single scattering is the add-on every dipole technique
+  // takes (knob single), so its model is the dipole's.
+  t.model = "dipole";
   t.validRange =
       "homogeneous objects under environment light, optically thick as the dipole needs, static "
       "shape";

@@ -68,9 +68,8 @@ prt::PrtModel precompute(const Scene& sc, const prt::PrtSettings& s) {
   prt::PrtModel model;
   model.cubeSize = s.transport.size, model.eta = s.transport.eta;
   model.phase = prt::PhaseFactors::isotropic();
-  auto rd = [&](double r) { return glm::dvec3(sc.profile.rd(r)); };
-  prt::vertexTransports(sc.vertices, sc.normals, hierarchy, rd, sc.profile.exitScale, nullptr,
-                        sc.caster, s, model, util::tbbFor, {});
+  prt::vertexTransports(sc.vertices, sc.normals, hierarchy, sc.profile, nullptr, nullptr, sc.caster,
+                        s, model, util::tbbFor, {});
   return model;
 }
 
@@ -153,8 +152,8 @@ TEST_CASE(
     prt::PrtSettings s = exactSettings();
     s.sampleTerms = sampleTerms, s.nodeTerms = nodeTerms, s.vertexTerms = vertexTerms;
     s.epsilon = epsilon;
-    const double e = relativeRms(
-        prt::relightVertices(precompute(sc, s), light, util::tbbFor).diffuse, expected);
+    const double e =
+        relativeRms(prt::relightVertices(precompute(sc, s), light, util::tbbFor).diffuse, expected);
     MESSAGE("sample terms " << sampleTerms << ", node terms " << nodeTerms << ", vertex terms "
                             << vertexTerms << ", epsilon " << epsilon << ": relative RMS " << e);
     return e;
@@ -242,4 +241,33 @@ TEST_CASE("PRT hard lights: a black environment gives black, one bright texel st
              util::tbbFor)
              .diffuse)
       CHECK(std::isfinite(b.x + b.y + b.z));
+}
+
+TEST_CASE(
+    "Single-scattering transport on a coarser cube, spread onto the environment's, keeps its "
+    "integral") {
+  const scene::TriangleMesh mesh = scene::shapes::sphere(5.0, 3);
+  const std::vector<glm::vec3> normals = mesh.vertexNormals();
+  const raycast::EmbreeRayCaster caster(mesh);
+  reference::HomogeneousScattering h;
+  h.sigmaS = {1.0, 0.5, 2.0}, h.sigmaT = {1.1, 0.8, 2.5}, h.eta = 1.3;
+  static const std::vector<scene::Light> kNoLights;
+  const reference::SingleScattering term(h, kNoLights, mesh, normals, caster, {});
+  auto total = [&](int size) {
+    prt::SingleTransportSampling s;
+    s.envSize = 16, s.size = size, s.depthSamples = 8, s.rayEpsilon = 1e-5;
+    std::vector<std::vector<glm::vec3>> out;
+    prt::singleTransport(term, prt::PhaseFactors::isotropic(), glm::dvec3(mesh.positions[3]),
+                         glm::dvec3(normals[3]), glm::dvec3(normals[3]), caster, s, out);
+    REQUIRE(out.size() == 1);
+    REQUIRE(out[0].size() == std::size_t(6 * 16 * 16));
+    glm::dvec3 sum(0);
+    for (const auto& v : out[0]) sum += glm::dvec3(v);
+    return sum;
+  };
+  const glm::dvec3 fine = total(16);
+  for (int size : {4, 8}) {
+    const glm::dvec3 coarse = total(size);
+    for (int c = 0; c < 3; ++c) CHECK(coarse[c] == doctest::Approx(fine[c]).epsilon(0.01));
+  }
 }

@@ -4,6 +4,8 @@
 // built-in techniques.
 #include <doctest/doctest.h>
 
+#include <map>
+
 #include <unistd.h>
 
 #include <cmath>
@@ -212,6 +214,26 @@ std::vector<glm::dvec3> frameOf(lt::Prepared& prepared, const VertexScene& s) {
   return f.radiance;
 }
 
+/// `light` as a technique can take it: itself, or, for a technique that takes only environments,
+/// a sky whose radiance is the light's irradiance spread over the texels facing it (brighter
+/// towards it, so a change of direction still moves the shading).
+std::vector<scene::Light> lightsFor(const lt::Technique& t, const scene::DirectionalLight& light) {
+  if (t.capabilities.directionalLights) return {light};
+  scene::EnvironmentLight sky;
+  sky.width = 32, sky.height = 16;
+  const glm::dvec3 toward = glm::normalize(light.towardLight);
+  for (int row = 0; row < sky.height; ++row)
+    for (int col = 0; col < sky.width; ++col) {
+      const double theta = optics::kPi * (row + 0.5) / sky.height;
+      const double phi = 2 * optics::kPi * (col + 0.5) / sky.width;
+      const glm::dvec3 d(std::sin(theta) * std::sin(phi), std::cos(theta),
+                         -std::sin(theta) * std::cos(phi));
+      sky.radiance.push_back(
+          glm::vec3(light.irradiance * std::max(0.0, glm::dot(d, toward)) / optics::kPi));
+    }
+  return {sky};
+}
+
 double relativeDifference(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
   double d2 = 0, r2 = 0;
   for (std::size_t i = 0; i < a.size(); ++i)
@@ -223,13 +245,13 @@ double relativeDifference(const std::vector<glm::dvec3>& a, const std::vector<gl
 TEST_CASE(
     "Prepare once, change the light (and the material where declared dynamic): a frame equals a "
     "fresh run") {
-  const std::vector<scene::Light> first = {
-      scene::DirectionalLight{glm::dvec3(0, 0, 1), glm::dvec3(1)}};
-  const std::vector<scene::Light> second = {
-      scene::DirectionalLight{glm::normalize(glm::dvec3(1, 0.5, 0.2)), glm::dvec3(2)}};
+  const scene::DirectionalLight firstLight{glm::dvec3(0, 0, 1), glm::dvec3(1)};
+  const scene::DirectionalLight secondLight{glm::normalize(glm::dvec3(1, 0.5, 0.2)), glm::dvec3(2)};
   for (const auto& t : lt::appRegistry().all()) {
     if (t.capabilities.needsCamera || t.name.rfind("test-", 0) == 0) continue;
     INFO(t.name);
+    const std::vector<scene::Light> first = lightsFor(t, firstLight);
+    const std::vector<scene::Light> second = lightsFor(t, secondLight);
     const lt::KnobValues knobs = t.values();
     VertexScene built("skin1", first);
     lt::Statistics stats;
@@ -260,9 +282,10 @@ TEST_CASE(
   // The techniques and the profiles are the registry's and the core's own lists; a new technique
   // with a `profile` knob is checked here with no edit. Per channel, each technique's summed vertex
   // radiance with profile M over its own with the classic dipole must match the reference's ratio.
-  const VertexScene s(
-      "skin1", {scene::DirectionalLight{glm::normalize(glm::dvec3(1, 0.5, 0.2)), glm::dvec3(1)}});
-  const auto summed = [&](const lt::Technique& t, const std::string& model) {
+  const scene::DirectionalLight light{glm::normalize(glm::dvec3(1, 0.5, 0.2)), glm::dvec3(1)};
+  const auto summed = [&](const lt::Technique& t, const std::string& model,
+                          const lt::Technique& lightsOf) {
+    const VertexScene s("skin1", lightsFor(lightsOf, light));
     lt::Statistics stats;
     const auto prepared = t.prepare(s.scene, t.values({{"profile", model}}), stats);
     glm::dvec3 sum(0);
@@ -274,14 +297,18 @@ TEST_CASE(
     return sum;
   };
   const lt::Technique& reference = *lt::appRegistry().find("reference");
-  const glm::dvec3 referenceDipole = summed(reference, "dipole");
   int checked = 0;
+  std::map<std::pair<std::string, bool>, glm::dvec3> referenceRatios;
   for (const auto& info : optics::kProfileModels) {
     const std::string model(info.name);
-    const glm::dvec3 referenceRatio = summed(reference, model) / referenceDipole;
     for (const auto& t : lt::appRegistry().all()) {
       if (!t.knob("profile") || t.capabilities.needsCamera || t.name == "reference") continue;
-      const glm::dvec3 ratio = summed(t, model) / summed(t, "dipole");
+      // The reference under the same light as the technique (once per kind of light).
+      const auto key = std::make_pair(model, t.capabilities.directionalLights);
+      if (!referenceRatios.count(key))
+        referenceRatios[key] = summed(reference, model, t) / summed(reference, "dipole", t);
+      const glm::dvec3 referenceRatio = referenceRatios[key];
+      const glm::dvec3 ratio = summed(t, model, t) / summed(t, "dipole", t);
       for (int c = 0; c < 3; ++c) {
         INFO(t.name << " profile " << model << " channel " << c << ": " << ratio[c]
                     << " against the reference's " << referenceRatio[c]);

@@ -9,6 +9,8 @@
 #include <atomic>
 #include <vector>
 
+#include "../optics/profile.hpp"
+#include "../reference/near_field.hpp"
 #include "../reference/surface_samples.hpp"
 #include "../util/parallel.hpp"
 #include "irradiance_transport.hpp"
@@ -19,14 +21,14 @@
 namespace lucent::prt {
 
 struct PrtSettings {
-  TransportSampling transport;    ///< the cube's size, rays per texel, eta
+  TransportSampling transport;  ///< the cube's size, rays per texel, eta
   // Unset, the precomputation is exact: every term kept, every sample summed (the prt technique's
   // knobs set them).
   std::size_t sampleTerms = 0;  ///< kept per sample's irradiance transport vector (0: all)
   std::size_t nodeTerms = 0;    ///< kept per hierarchy node (0: all)
   std::size_t vertexTerms = 0;  ///< kept per vertex vector (0: all)
   double epsilon = 0;           ///< the hierarchy's area / distance^2 bound
-  bool single = true;             ///< add the single-scattering vectors
+  bool single = true;           ///< add the single-scattering vectors
   SingleTransportSampling singleSampling;
 };
 
@@ -70,19 +72,22 @@ inline std::vector<SparseScalars> sampleTransports(const reference::SurfaceSampl
   return out;
 }
 
-/// The per-vertex vectors: `rd(r)` the profile per channel, `exitScale` its exit convention;
+/// The per-vertex vectors from the diffusion `profile`; `near` (optional) integrates the samples
+/// near each vertex as a disc (reference/near_field.hpp) where the spacing does not resolve Rd;
 /// `singleTerm` (built with no lights) follows light inside for the single-scattering vectors.
-template <class Rd>
-void vertexTransports(const std::vector<glm::dvec3>& vertices,
-                      const std::vector<glm::vec3>& normals, const TransportHierarchy& hierarchy,
-                      const Rd& rd, double exitScale, const reference::SingleScattering* singleTerm,
-                      const scene::RayCaster& caster, const PrtSettings& s, PrtModel& model,
-                      const util::ParallelFor& parallelFor, const util::Progress& progress) {
+inline void vertexTransports(const std::vector<glm::dvec3>& vertices,
+                             const std::vector<glm::vec3>& normals,
+                             const TransportHierarchy& hierarchy,
+                             const optics::Profile<double>& profile,
+                             const reference::NearField* near,
+                             const reference::SingleScattering* singleTerm,
+                             const scene::RayCaster& caster, const PrtSettings& s, PrtModel& model,
+                             const util::ParallelFor& parallelFor, const util::Progress& progress) {
   const int size = s.transport.size;
   const std::size_t texels = std::size_t(6) * size * size;
   const std::size_t keep = s.vertexTerms == 0 ? texels : s.vertexTerms;
   const bool folded = model.phase.terms() == 1;  // isotropic: one diffuse vector
-  const float toExit = float(exitScale / optics::kPi),
+  const float toExit = float(profile.exitScale / optics::kPi),
               toOutside = float(1 / (s.transport.eta * s.transport.eta));
   model.diffuse.assign(vertices.size(), {});
   model.single.assign(singleTerm && !folded ? vertices.size() : 0, {});
@@ -92,7 +97,12 @@ void vertexTransports(const std::vector<glm::dvec3>& vertices,
     std::vector<std::vector<glm::vec3>> single;
     for (std::size_t v = begin; v < end; ++v) {
       std::fill(acc.begin(), acc.end(), glm::vec3(0));
-      hierarchy.gather(vertices[v], rd, acc);
+      hierarchy.gather(
+          vertices[v], [&](double r) { return glm::dvec3(profile.rd(r)); }, acc);
+      if (near)
+        near->forEachNear(vertices[v], profile, [&](std::uint32_t i, const glm::dvec3& c) {
+          hierarchy.addSample(i, glm::vec3(c), acc);
+        });
       for (auto& c : acc) c *= toExit;
       if (singleTerm) {
         const glm::dvec3 n(normals[v]);

@@ -88,6 +88,11 @@ class TransportHierarchy {
     return added;
   }
 
+  /// Adds sample i's vector A_i E_i times `scale` per channel (a near-field correction's terms).
+  void addSample(std::size_t i, const glm::vec3& scale, std::vector<glm::vec3>& accumulator) const {
+    addScaled(mSamples[i], scale, accumulator);
+  }
+
   /// Bytes of the samples' and the nodes' sparse vectors (index + value each).
   std::size_t bytes() const {
     std::size_t terms = 0;

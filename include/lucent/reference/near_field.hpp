@@ -67,8 +67,21 @@ class NearField {
   /// terms (computed exactly as the sum computed them, so they cancel).
   template <class T>
   glm::dvec3 correction(const glm::dvec3& xo, const optics::Profile<T>& dipole) const {
-    if (mKeys.empty()) return glm::dvec3(0);
-    glm::dvec3 pointTerms(0), power(0);
+    glm::dvec3 out(0);
+    forEachNear(xo, dipole, [&](std::uint32_t i, const glm::dvec3& coefficient) {
+      out += glm::dvec3(mPower[i]) * coefficient;
+    });
+    return out;
+  }
+
+  /// The correction as a linear map of the near samples' powers: visit(i, c) for each sample i
+  /// within the radius, with the correction = sum_i power_i c_i per channel,
+  /// c_i = weight (cumulative Rd(rho) / near area - Rd(r_i)). What a sum over anything linear in
+  /// the power (a transport vector) applies.
+  template <class T, class Visit>
+  void forEachNear(const glm::dvec3& xo, const optics::Profile<T>& dipole, Visit&& visit) const {
+    if (mKeys.empty()) return;
+    std::vector<std::pair<std::uint32_t, double>> near;
     double area = 0;
     const glm::ivec3 c = cellOf(xo);
     for (int dz = -1; dz <= 1; ++dz)
@@ -82,22 +95,25 @@ class NearField {
             const std::uint32_t i = mOrder[k];
             const double r = glm::length(glm::dvec3(mPosition[i]) - xo);
             if (r > mRadius) continue;
-            area += double(mArea[i]), power += glm::dvec3(mPower[i]);
-            for (int ch = 0; ch < 3; ++ch)
-              pointTerms[ch] += double(mPower[i][ch]) * double(dipole.channel[ch].rd(T(r)));
+            area += double(mArea[i]);
+            near.emplace_back(i, r);
           }
         }
-    if (!(area > 0)) return glm::dvec3(0);
-    glm::dvec3 out;
+    if (!(area > 0)) return;
+    glm::dvec3 discPerArea, weight;
     for (int ch = 0; ch < 3; ++ch) {
-      const double disc = power[ch] / area * double(dipole.channel[ch].cumulative(T(mRadius)));
+      const auto& channel = dipole.channel[ch];
+      discPerArea[ch] = double(channel.cumulative(T(mRadius))) / area;
       // A profile singular at r = 0 (beam diffusion, Burley) is no point-sum integrand there:
       // always the disc.
-      const auto& channel = dipole.channel[ch];
-      const double weight = channel.isPolePair() ? discWeight(double(channel.width())) : 1.0;
-      out[ch] = weight * (disc - pointTerms[ch]);
+      weight[ch] = channel.isPolePair() ? discWeight(double(channel.width())) : 1.0;
     }
-    return out;
+    for (const auto& [i, r] : near) {
+      glm::dvec3 coefficient;
+      for (int ch = 0; ch < 3; ++ch)
+        coefficient[ch] = weight[ch] * (discPerArea[ch] - double(dipole.channel[ch].rd(T(r))));
+      visit(i, coefficient);
+    }
   }
 
   /// 0 where the spacing resolves Rd (spacing <= its width w), 1 from 4 w, linear between.

@@ -29,6 +29,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -66,10 +67,13 @@ struct DepthSample {
 /// The depth samples of int_0^d e^{-sigma_t t} f(t) dt: N stratified distances from each distinct
 /// channel's exponential on [0, d], combined by the balance heuristic, so a channel is sampled
 /// where its own attenuation lets light through.
-inline std::vector<DepthSample> depthSamples(const glm::dvec3& sigmaT, double d, int n) {
-  std::vector<double> rates;
-  for (int c = 0; c < 3; ++c)
-    if (std::find(rates.begin(), rates.end(), sigmaT[c]) == rates.end()) rates.push_back(sigmaT[c]);
+/// `rates` the strategies' coefficients (empty: each distinct channel's).
+inline std::vector<DepthSample> depthSamples(const glm::dvec3& sigmaT, double d, int n,
+                                             std::vector<double> rates = {}) {
+  if (rates.empty())
+    for (int c = 0; c < 3; ++c)
+      if (std::find(rates.begin(), rates.end(), sigmaT[c]) == rates.end())
+        rates.push_back(sigmaT[c]);
   // pdf of one strategy on [0, d]: sigma e^{-sigma t} / Lambda, uniform 1/d where sigma d vanishes.
   auto pdf = [d](double sigma, double t) {
     const double lambda = -std::expm1(-sigma * d);
@@ -164,6 +168,38 @@ class SingleScattering {
 
   const HomogeneousScattering& medium() const { return mMedium; }
 
+  /// Jensen 2001's incident path from x towards a light `towardLight` (unit) up to lightDistance:
+  /// where the straight line leaves, the refracted length s_i' and its attenuation, the flux
+  /// density across the refracted beam per unit irradiance (Ft cos(theta_i) / cos(theta_i')), the
+  /// light's direction of travel inside; none when the line meets no boundary facing the light or
+  /// the light is blocked outside.
+  struct StraightEntry {
+    glm::dvec3 attenuation{0}, travel{0};
+    double transmitted = 0, refractedLength = 0, rest = 0;
+  };
+  std::optional<StraightEntry> enterStraight(const glm::dvec3& x, const glm::dvec3& towardLight,
+                                             double lightDistance) const {
+    const auto hit = mCaster.intersect(x, towardLight, 0, lightDistance);
+    if (!hit) return std::nullopt;
+    const std::uint32_t tri = hit->triangle;
+    const glm::dvec3 faceNormal = glm::normalize(mMesh.areaVector(tri));
+    const glm::dvec3 n =
+        scene::shadingNormal(mMesh, mNormals, tri, {1 - hit->u - hit->v, hit->u, hit->v});
+    const double cosI = std::abs(glm::dot(n, towardLight));
+    if (!(cosI > 0) || glm::dot(faceNormal, towardLight) <= 0) return std::nullopt;
+    StraightEntry e;
+    e.rest = lightDistance - hit->t;
+    const glm::dvec3 xi = x + towardLight * hit->t + faceNormal * mSettings.rayEpsilon;
+    if (mCaster.occluded(xi, towardLight, 0, e.rest)) return std::nullopt;
+    const double eta = mMedium.eta;
+    const double cosRefracted = std::sqrt(std::max(0.0, 1 - (1 - cosI * cosI) / (eta * eta)));
+    e.refractedLength = hit->t * cosI / cosRefracted;  // Jensen 2001's s_i'
+    e.travel = glm::refract(-towardLight, n, 1.0 / eta);
+    e.transmitted = optics::fresnelTransmittance(cosI, eta) * cosI / cosRefracted;
+    for (int c = 0; c < 3; ++c) e.attenuation[c] = std::exp(-mMedium.sigmaT[c] * e.refractedLength);
+    return e;
+  }
+
  private:
   static constexpr int kMaxReflections = 16;
   static constexpr double kNegligible = 1e-4;
@@ -250,31 +286,14 @@ class SingleScattering {
   glm::dvec3 throughBoundary(const glm::dvec3& x, const glm::dvec3& towardLight,
                              double lightDistance, const glm::dvec3& out, const glm::dvec3& e,
                              bool inverseSquare) const {
-    const auto hit = mCaster.intersect(x, towardLight, 0, lightDistance);
-    if (!hit) return glm::dvec3(0);
-    const std::uint32_t tri = hit->triangle;
-    const glm::dvec3 faceNormal = glm::normalize(mMesh.areaVector(tri));
-    const glm::dvec3 n =
-        scene::shadingNormal(mMesh, mNormals, tri, {1 - hit->u - hit->v, hit->u, hit->v});
-    const double cosI = std::abs(glm::dot(n, towardLight));
-    if (!(cosI > 0) || glm::dot(faceNormal, towardLight) <= 0) return glm::dvec3(0);
-    const glm::dvec3 xi = x + towardLight * hit->t + faceNormal * mSettings.rayEpsilon;
-    const double rest = lightDistance - hit->t;
-    if (mCaster.occluded(xi, towardLight, 0, rest)) return glm::dvec3(0);
-    const double eta = mMedium.eta;
-    const double cosRefracted = std::sqrt(std::max(0.0, 1 - (1 - cosI * cosI) / (eta * eta)));
-    const double refractedLength = hit->t * cosI / cosRefracted;  // Jensen 2001's s_i'
-    // The light's direction of travel inside, refracted at x_i.
-    const glm::dvec3 travel = glm::refract(-towardLight, n, 1.0 / eta);
-    const double phase = optics::phaseHG(glm::dot(travel, out), mMedium.g);
+    const auto entry = enterStraight(x, towardLight, lightDistance);
+    if (!entry) return glm::dvec3(0);
+    const double phase = optics::phaseHG(glm::dot(entry->travel, out), mMedium.g);
     // A point light's beam spreads from a virtual source rest + s_i'/eta away (paraxially, through
     // a flat boundary; the straight distance to the light at eta = 1).
-    const double spread = rest + refractedLength / eta;
-    const double flux = optics::fresnelTransmittance(cosI, eta) * cosI / cosRefracted * phase /
-                        (inverseSquare ? spread * spread : 1.0);
-    glm::dvec3 attenuation;
-    for (int c = 0; c < 3; ++c) attenuation[c] = std::exp(-mMedium.sigmaT[c] * refractedLength);
-    return e * attenuation * flux;
+    const double spread = entry->rest + entry->refractedLength / mMedium.eta;
+    return e * entry->attenuation *
+           (entry->transmitted * phase / (inverseSquare ? spread * spread : 1.0));
   }
 
   HomogeneousScattering mMedium;
