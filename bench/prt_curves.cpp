@@ -45,7 +45,7 @@ void phaseCurves(const std::filesystem::path& dir) {
       const double e = prt::phaseFactorError(f, gs[i]);
       csv << gs[i] << "," << k << "," << e << "\n";
       std::printf("phase g %+.2f  K %2d  rms error %.3e\n", gs[i], k, e);
-      if (e > 0) s.x.push_back(k), s.y.push_back(e);
+      if (e > 1e-6) s.x.push_back(k), s.y.push_back(e);  // g = 0: exact from K = 1, not drawn
     }
     if (!s.x.empty()) series.push_back(s);
   }
