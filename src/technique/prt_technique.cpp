@@ -1,6 +1,7 @@
 // The "prt" technique: all-frequency wavelet PRT of translucency (Wang, Tran, Luebke 2005): prepare
 // precomputes the transport vectors (include/lucent/prt), a frame relights them under the scene's
 // environment, turned by the knob `rotate`. Compiled because the phase function's SVD uses Eigen.
+#include <atomic>
 #include <cmath>
 #include <memory>
 #include <sstream>
@@ -154,8 +155,8 @@ class PrtPrepared final : public Prepared {
     const prt::VertexShading shading = stats.timeFrame(
         "relight", [&] { return prt::relightVertices(mModel, light, scene.parallelFor); });
     FrameResult out;
-    out.radiance =
-        stats.timeFrame("interpolate", [&] { return pointsRadiance(scene, request, shading); });
+    out.radiance = stats.timeFrame("interpolate",
+                                   [&] { return pointsRadiance(scene, request, shading, stats); });
     return out;
   }
 
@@ -178,9 +179,14 @@ class PrtPrepared final : public Prepared {
         detail::singleScatteringMedium(scene.medium.material, g), kNoLights, scene.mesh,
         scene.vertexNormals, *scene.caster, reference::SingleScatteringSettings{});
     std::vector<glm::dvec3> vertices(scene.mesh.positions.begin(), scene.mesh.positions.end());
+    // The near disc's radius follows the samples as placed: a mesh with more triangles than the
+    // budget has a sample on each, closer than the coarsened spacing says.
+    double area = 0;
+    for (double a : samples.area) area += a;
+    const double placed = std::sqrt(area / double(std::max<std::size_t>(1, samples.size())));
     const reference::NearField near(samples.position,
                                     std::vector<glm::dvec3>(samples.size(), glm::dvec3(0)),
-                                    samples.area, spacing);
+                                    samples.area, std::min(spacing, placed));
     stats.timePrepare("vertex_transport", [&] {
       prt::vertexTransports(vertices, scene.vertexNormals, hierarchy, profile, &near,
                             s.single ? &single : nullptr, *scene.caster, s, mModel,
@@ -200,8 +206,10 @@ class PrtPrepared final : public Prepared {
   }
 
   std::vector<glm::dvec3> pointsRadiance(const SceneDescription& scene, const ShadeRequest& request,
-                                         const prt::VertexShading& shading) const {
+                                         const prt::VertexShading& shading,
+                                         Statistics& stats) const {
     std::vector<glm::dvec3> radiance(request.points.size());
+    std::atomic<std::size_t> clamped{0};
     scene.parallelFor(radiance.size(), [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {
         const reference::ShadingPoint& p = request.points[i];
@@ -212,8 +220,15 @@ class PrtPrepared final : public Prepared {
             request.camera ? glm::normalize(request.camera->eye - p.position) : normal;
         radiance[i] =
             prt::pointRadiance(mModel, shading, scene.mesh.triangles[p.triangle], w, normal, toEye);
+        // A truncated light or phase expansion can dip below zero where the true value is small:
+        // clamped, and counted.
+        if (radiance[i].x < 0 || radiance[i].y < 0 || radiance[i].z < 0) {
+          radiance[i] = glm::max(radiance[i], glm::dvec3(0));
+          ++clamped;
+        }
       }
     });
+    stats.figures["negative_points_clamped"] = double(clamped);
     return radiance;
   }
 

@@ -16,6 +16,8 @@
 
 #include "prt/phase_svd.hpp"
 #include "raycast/embree_ray_caster.hpp"
+#include "scene/builtin_shapes.hpp"
+#include "technique/techniques.hpp"
 #include "util/tbb_parallel.hpp"
 
 using namespace lucent;
@@ -37,17 +39,6 @@ scene::EnvironmentLight sunnySky() {
   return env;
 }
 
-struct Scene {
-  scene::TriangleMesh mesh = scene::shapes::sphere(5.0, 2);
-  std::vector<glm::vec3> normals = mesh.vertexNormals();
-  raycast::EmbreeRayCaster caster{mesh};
-  optics::Profile<double> profile = optics::Profile<double>::make(
-      optics::ProfileModel::Dipole, optics::Rgb<double>(optics::findMaterial("marble")->sigmaA),
-      optics::Rgb<double>(optics::findMaterial("marble")->sigmaSPrime), 1.3);
-  reference::SurfaceSamples samples = reference::buildSurfaceSamples(mesh, 1.0);
-  std::vector<glm::dvec3> vertices{mesh.positions.begin(), mesh.positions.end()};
-};
-
 prt::PrtSettings exactSettings() {
   prt::PrtSettings s;
   s.transport.size = kCube;
@@ -59,12 +50,38 @@ prt::PrtSettings exactSettings() {
   return s;
 }
 
+struct Scene {
+  scene::TriangleMesh mesh = scene::shapes::sphere(5.0, 2);
+  std::vector<glm::vec3> normals = mesh.vertexNormals();
+  raycast::EmbreeRayCaster caster{mesh};
+  optics::Profile<double> profile = optics::Profile<double>::make(
+      optics::ProfileModel::Dipole, optics::Rgb<double>(optics::findMaterial("marble")->sigmaA),
+      optics::Rgb<double>(optics::findMaterial("marble")->sigmaSPrime), 1.3);
+  reference::SurfaceSamples samples = reference::buildSurfaceSamples(mesh, 1.0);
+  std::vector<glm::dvec3> vertices{mesh.positions.begin(), mesh.positions.end()};
+  /// The samples' vectors with every term (the ray casting), once per scene.
+  std::vector<prt::SparseScalars> allTransports =
+      prt::sampleTransports(samples, caster, exactSettings(), util::tbbFor, {});
+};
+
+/// The scene's sample vectors truncated to `terms` (0: all).
+std::vector<prt::SparseScalars> sampleTransports(const Scene& sc, std::size_t terms) {
+  if (terms == 0) return sc.allTransports;
+  std::vector<prt::SparseScalars> truncated;
+  std::vector<float> dense(std::size_t(6) * kCube * kCube);
+  for (const auto& v : sc.allTransports) {
+    std::fill(dense.begin(), dense.end(), 0.0f);
+    for (std::size_t i = 0; i < v.size(); ++i) dense[v.index[i]] = v.value[i];
+    truncated.push_back(prt::keepLargest(dense, kCube, terms));
+  }
+  return truncated;
+}
+
 /// The model's multiple-scattering vectors (no single scattering).
 prt::PrtModel precompute(const Scene& sc, const prt::PrtSettings& s) {
-  prt::TransportHierarchy hierarchy(
-      sc.samples.position, sc.samples.area,
-      prt::sampleTransports(sc.samples, sc.caster, s, util::tbbFor, {}), s.transport.size,
-      s.nodeTerms, s.epsilon);
+  prt::TransportHierarchy hierarchy(sc.samples.position, sc.samples.area,
+                                    sampleTransports(sc, s.sampleTerms), s.transport.size,
+                                    s.nodeTerms, s.epsilon);
   prt::PrtModel model;
   model.cubeSize = s.transport.size, model.eta = s.transport.eta;
   model.phase = prt::PhaseFactors::isotropic();
@@ -158,8 +175,8 @@ TEST_CASE(
                             << vertexTerms << ", epsilon " << epsilon << ": relative RMS " << e);
     return e;
   };
-  for (std::size_t k : {32u, 64u, 128u, 192u, 256u}) errorWith(k, 0, 0, 0);
-  for (std::size_t k : {32u, 64u, 128u, 192u, 256u}) errorWith(0, 0, k, 0);
+  for (std::size_t k : {64u, 128u, 256u}) errorWith(k, 0, 0, 0);
+  for (std::size_t k : {64u, 128u, 256u}) errorWith(0, 0, k, 0);
   errorWith(0, 64, 0, 0.05);
   errorWith(0, 0, 0, 0.05);
   CHECK(errorWith(192, 192, 256, 0.05) < 0.03);
@@ -269,5 +286,47 @@ TEST_CASE(
   for (int size : {4, 8}) {
     const glm::dvec3 coarse = total(size);
     for (int c = 0; c < 3; ++c) CHECK(coarse[c] == doctest::Approx(fine[c]).epsilon(0.01));
+  }
+}
+
+TEST_CASE(
+    "prt hard cases: a thin twirl, strongly forward and backward scattering, spectralon, zeros "
+    "in the light: finite and non-negative") {
+  // The technique as front ends run it, on the built-in twirl (thin, high curvature).
+  technique::SceneDescription scene;
+  scene.mesh = scene::makeBuiltinShape("twirl");
+  scene.mesh.scaleToSize(20);
+  scene.vertexNormals = scene.mesh.vertexNormals();
+  const raycast::EmbreeRayCaster caster(scene.mesh);
+  scene.caster = &caster;
+  scene.parallelFor = util::tbbFor;
+  scene::EnvironmentLight halfBlack = sunnySky();  // the lower half of the sky black
+  for (std::size_t i = halfBlack.radiance.size() / 2; i < halfBlack.radiance.size(); ++i)
+    halfBlack.radiance[i] = glm::vec3(0);
+  scene.lights = {halfBlack};
+  const technique::Technique& prt = technique::appRegistry().get("prt");
+  for (const auto& [material, g] :
+       {std::pair{"skin1", 0.9}, std::pair{"skin1", -0.9}, std::pair{"spectralon", 0.0}}) {
+    INFO(material << ", g = " << g);
+    scene.medium.material = *optics::findMaterial(material);
+    technique::Statistics stats;
+    const auto knobs = prt.values({{"cube", "8"},
+                                   {"max-samples", "3000"},
+                                   {"g", std::to_string(g)},
+                                   {"phase-cube", "4"},
+                                   {"phase-terms", "2"},
+                                   {"single-cube", "4"},
+                                   {"single-samples", "2"}});
+    const auto request = technique::vertexRequest(scene.mesh);
+    const technique::FrameResult frame =
+        prt.prepare(scene, knobs, stats)->frame(scene, request, stats);
+    REQUIRE(frame.radiance.size() == request.points.size());
+    double lit = 0;
+    for (const auto& l : frame.radiance) {
+      CHECK(std::isfinite(l.x + l.y + l.z));
+      CHECK((l.x >= 0 && l.y >= 0 && l.z >= 0));
+      lit += l.x;
+    }
+    CHECK(lit > 0);
   }
 }
