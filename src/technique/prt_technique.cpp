@@ -249,6 +249,7 @@ Technique prtTechnique() {
       "Single and Multiple Scattering, Sec. 3-4 (Eq. 6-11); Ng, Ramamoorthi, Hanrahan 2003; "
       "Jensen, "
       "Buhler 2002";
+  t.requiredLibrary = "Eigen (the phase function's SVD, src/prt/phase_svd.cpp)";
   t.knobs = prtKnobs();
   Capabilities& c = t.capabilities;
   c.pointLights = false, c.directionalLights = false, c.environmentLights = true;
