@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include <lucent/image/metrics.hpp>
 #include <lucent/optics/materials.hpp>
 #include <lucent/prt/relight.hpp>
 #include <lucent/reference/dipole_truth.hpp>
@@ -56,15 +57,6 @@ void phaseCurves(const std::filesystem::path& dir) {
                          series);
 }
 
-double relativeRms(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
-  double num = 0, den = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    const glm::dvec3 d = a[i] - b[i];
-    num += glm::dot(d, d), den += glm::dot(b[i], b[i]);
-  }
-  return std::sqrt(num / den);
-}
-
 void lightCurves(const std::filesystem::path& dir) {
   scene::TriangleMesh mesh = scene::shapes::torus(1.0, 0.4, 96, 48);
   mesh.scaleToSize(30);
@@ -85,9 +77,7 @@ void lightCurves(const std::filesystem::path& dir) {
                                     s.transport.size, 0, s.epsilon);
   prt::PrtModel model;
   model.cubeSize = 16, model.eta = m.eta, model.phase = prt::PhaseFactors::isotropic();
-  const reference::NearField near(samples.position,
-                                  std::vector<glm::dvec3>(samples.size(), glm::dvec3(0)),
-                                  samples.area, spacing.spacing);
+  const reference::NearField near = prt::nearField(samples, spacing.spacing);
   const std::vector<glm::dvec3> vertices(mesh.positions.begin(), mesh.positions.end());
   prt::vertexTransports(vertices, normals, hierarchy, profile, &near, nullptr, caster, s, model,
                         util::tbbFor, {});
@@ -112,7 +102,7 @@ void lightCurves(const std::filesystem::path& dir) {
       const auto relit = prt::relightVertices(model, light, util::tbbFor);
       const double ms =
           1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-      const double e = relativeRms(relit.diffuse, all.diffuse);
+      const double e = image::relativeRms(relit.diffuse, all.diffuse);
       csv << curve.name << "," << terms << "," << e << "," << ms << "\n";
       std::printf("light %-13s %5zu terms  relative RMS %.3e  frame %.1f ms\n", curve.name.c_str(),
                   terms, e, ms);

@@ -179,14 +179,7 @@ class PrtPrepared final : public Prepared {
         detail::singleScatteringMedium(scene.medium.material, g), kNoLights, scene.mesh,
         scene.vertexNormals, *scene.caster, reference::SingleScatteringSettings{});
     std::vector<glm::dvec3> vertices(scene.mesh.positions.begin(), scene.mesh.positions.end());
-    // The near disc's radius follows the samples as placed: a mesh with more triangles than the
-    // budget has a sample on each, closer than the coarsened spacing says.
-    double area = 0;
-    for (double a : samples.area) area += a;
-    const double placed = std::sqrt(area / double(std::max<std::size_t>(1, samples.size())));
-    const reference::NearField near(samples.position,
-                                    std::vector<glm::dvec3>(samples.size(), glm::dvec3(0)),
-                                    samples.area, std::min(spacing, placed));
+    const reference::NearField near = prt::nearField(samples, spacing);
     stats.timePrepare("vertex_transport", [&] {
       prt::vertexTransports(vertices, scene.vertexNormals, hierarchy, profile, &near,
                             s.single ? &single : nullptr, *scene.caster, s, mModel,

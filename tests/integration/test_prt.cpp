@@ -9,6 +9,7 @@
 #include <limits>
 #include <string>
 
+#include <lucent/image/metrics.hpp>
 #include <lucent/optics/materials.hpp>
 #include <lucent/optics/profile.hpp>
 #include <lucent/prt/relight.hpp>
@@ -118,14 +119,6 @@ std::vector<glm::dvec3> directSum(const Scene& sc, const scene::EnvironmentLight
   return b;
 }
 
-double relativeRms(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
-  double num = 0, den = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    const glm::dvec3 d = a[i] - b[i];
-    num += glm::dot(d, d), den += glm::dot(b[i], b[i]);
-  }
-  return std::sqrt(num / den);
-}
 }  // namespace
 
 TEST_CASE(
@@ -137,7 +130,7 @@ TEST_CASE(
   const std::vector<glm::dvec3> expected = directSum(sc, scene::resampleToCube(sky, kCube));
   const prt::VertexShading relit = prt::relightVertices(
       model, prt::lightVector({&sky}, kCube, 0, 0, prt::Selection::Magnitude), util::tbbFor);
-  const double error = relativeRms(relit.diffuse, expected);
+  const double error = image::relativeRms(relit.diffuse, expected);
   MESSAGE("all terms, epsilon 0: relative RMS against the direct sum " << error);
   CHECK(error < 2e-4);  // 16-bit quantisation of each vertex vector and float sums
   for (const auto& b : relit.diffuse) CHECK(b.x > 0);
@@ -154,7 +147,7 @@ TEST_CASE(
     for (std::size_t terms : {1u, 4u, 16u, 64u, 384u}) {
       const auto light = prt::lightVector({&sky}, kCube, 0, terms, selection);
       const double error =
-          relativeRms(prt::relightVertices(exact, light, util::tbbFor).diffuse, expected);
+          image::relativeRms(prt::relightVertices(exact, light, util::tbbFor).diffuse, expected);
       MESSAGE(std::string(selection == prt::Selection::Magnitude ? "magnitude" : "area-weighted")
               << ", " << terms << " light terms: relative RMS " << error);
       if (selection == prt::Selection::AreaWeighted) CHECK(error <= previous * 1.02);
@@ -169,8 +162,8 @@ TEST_CASE(
     prt::PrtSettings s = exactSettings();
     s.sampleTerms = sampleTerms, s.nodeTerms = nodeTerms, s.vertexTerms = vertexTerms;
     s.epsilon = epsilon;
-    const double e =
-        relativeRms(prt::relightVertices(precompute(sc, s), light, util::tbbFor).diffuse, expected);
+    const double e = image::relativeRms(
+        prt::relightVertices(precompute(sc, s), light, util::tbbFor).diffuse, expected);
     MESSAGE("sample terms " << sampleTerms << ", node terms " << nodeTerms << ", vertex terms "
                             << vertexTerms << ", epsilon " << epsilon << ": relative RMS " << e);
     return e;

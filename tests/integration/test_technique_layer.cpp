@@ -16,6 +16,7 @@
 #include <memory>
 #include <sstream>
 
+#include <lucent/image/metrics.hpp>
 #include <lucent/optics/profile.hpp>
 #include <lucent/scene/shapes.hpp>
 
@@ -234,12 +235,6 @@ std::vector<scene::Light> lightsFor(const lt::Technique& t, const scene::Directi
   return {sky};
 }
 
-double relativeDifference(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
-  double d2 = 0, r2 = 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    d2 += glm::dot(a[i] - b[i], a[i] - b[i]), r2 += glm::dot(b[i], b[i]);
-  return std::sqrt(d2 / r2);
-}
 }  // namespace
 
 TEST_CASE(
@@ -262,12 +257,12 @@ TEST_CASE(
     REQUIRE(t.capabilities.dynamicLight);
     const auto reused = frameOf(*prepared, moved);
     const auto fresh = frameOf(*t.prepare(moved.scene, knobs, stats), moved);
-    CHECK(relativeDifference(reused, fresh) < 1e-9);
+    CHECK(image::relativeRms(reused, fresh) < 1e-9);
 
     VertexScene marble("marble", second);
     const auto reusedMaterial = frameOf(*prepared, marble);
     const double materialDifference =
-        relativeDifference(reusedMaterial, frameOf(*t.prepare(marble.scene, knobs, stats), marble));
+        image::relativeRms(reusedMaterial, frameOf(*t.prepare(marble.scene, knobs, stats), marble));
     if (t.capabilities.dynamicMaterial)
       CHECK(materialDifference < 1e-9);
     else

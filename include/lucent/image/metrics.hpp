@@ -7,6 +7,10 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 
 #include "tonemap.hpp"
 
@@ -25,6 +29,18 @@ struct ImageErrors {
   /// factor sum(ab) / sum(a^2): the error of the image's shape, which no normalisation removes.
   double scaledRelativeRms = 0;
 };
+
+/// sqrt(sum |a - b|^2 / sum |b|^2) of per-point radiance (vertices, request points): the
+/// relative RMS of `test` against `reference`, as ImageErrors::relativeRms is over pixels.
+inline double relativeRms(const std::vector<glm::dvec3>& test,
+                          const std::vector<glm::dvec3>& reference) {
+  double diff = 0, ref = 0;
+  for (std::size_t i = 0; i < reference.size(); ++i) {
+    const glm::dvec3 d = test[i] - reference[i];
+    diff += glm::dot(d, d), ref += glm::dot(reference[i], reference[i]);
+  }
+  return std::sqrt(diff / ref);
+}
 
 inline void requireSameSize(const Image& a, const Image& b) {
   if (a.width != b.width || a.height != b.height)

@@ -6,7 +6,9 @@
 /// multiple-scattering vector T = (exit scale / pi) sum_j Rd A_j E_j plus the single-scattering
 /// vectors (isotropic: folded into T). Every vector is stored quantised to 16 bits
 /// (sparse_vector.hpp).
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <vector>
 
 #include "../optics/profile.hpp"
@@ -70,6 +72,18 @@ inline std::vector<SparseScalars> sampleTransports(const reference::SurfaceSampl
     if (progress) progress(double(done += end - begin) / double(samples.size()));
   });
   return out;
+}
+
+/// The near field of the samples (reference/near_field.hpp), its radius from the spacing they
+/// were placed at: a mesh with more triangles than the budget has a sample on each, closer than the
+/// coarsened `spacing` says.
+inline reference::NearField nearField(const reference::SurfaceSamples& samples, double spacing) {
+  double area = 0;
+  for (double a : samples.area) area += a;
+  const double placed = std::sqrt(area / double(std::max<std::size_t>(1, samples.size())));
+  return reference::NearField(samples.position,
+                              std::vector<glm::dvec3>(samples.size(), glm::dvec3(0)), samples.area,
+                              std::min(spacing, placed));
 }
 
 /// The per-vertex vectors from the diffusion `profile`; `near` (optional) integrates the samples
