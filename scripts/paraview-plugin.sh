@@ -23,12 +23,15 @@ cmake --build build-paraview -j"$(nproc)"
 plugin=build-paraview/lib/paraview-plugins/LucentPlugin/LucentPlugin.so
 mkdir -p build-paraview/screenshots
 # The registry as the CLI prints it: the plugin test checks the generated properties against it.
-techniques=()
+# An environment map for the prt check: a small render (an object on black: zeros and a bright patch).
+checks=()
 if [ -x build/lucent ]; then
   build/lucent techniques --json > build-paraview/techniques.json
-  techniques=(build-paraview/techniques.json)
+  build/lucent render --shape torus --method diffuse-brdf --size-mm 300 --width 64 --height 32 \
+    --out build-paraview/environment.exr > /dev/null
+  checks=(build-paraview/techniques.json build-paraview/environment.exr)
 fi
-xvfb-run -a pvbatch tests/paraview/test_lucent_plugin.py "$plugin" build-paraview/screenshots "${techniques[@]}"
+xvfb-run -a pvbatch tests/paraview/test_lucent_plugin.py "$plugin" build-paraview/screenshots "${checks[@]}"
 xvfb-run -a pvbatch examples/paraview_translucent.py "$plugin" build-paraview/screenshots/example.png
 # Data-parallel: the same surface split over 2 MPI ranks must give the one-process result.
 mpi=(mpiexec -n 2)

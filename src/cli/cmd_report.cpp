@@ -88,13 +88,13 @@ Options optionsOf(const Args& args) {
 /// The scene's fingerprint: every scene option as given, the bytes of each file they name, and
 /// the lucent executable (a rebuilt lucent measures again).
 std::string sceneKey(const Args& args) {
-  rp::Fingerprint f;
-  f.addFile("/proc/self/exe");
+  lucent::util::Fingerprint f;
+  rp::addFile(f, "/proc/self/exe");
   for (const OptionSpec& spec : sceneOptionSpecs())
     for (const std::string& value : args.all(spec.name)) {
       f.add(spec.name).add(value);
       std::error_code ec;
-      if (std::filesystem::is_regular_file(value, ec)) f.addFile(value);
+      if (std::filesystem::is_regular_file(value, ec)) rp::addFile(f, value);
     }
   return f.hex();
 }

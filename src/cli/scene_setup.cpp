@@ -8,7 +8,7 @@
 #include <optional>
 #include <sstream>
 
-#include <lucent/scene/environment_resample.hpp>
+#include <lucent/scene/environment_image.hpp>
 #include <lucent/scene/mesh_check.hpp>
 #include <lucent/scene/shapes.hpp>
 #include <lucent/technique/transfer_function.hpp>
@@ -33,49 +33,18 @@ constexpr const char* kDefaultMaterial = "skin1";
 
 /// "point:X,Y,Z[:R,G,B]" (mm; R,G,B = irradiance at the object's centre), "dir:X,Y,Z[:R,G,B]"
 /// (towards the light; irradiance), "env:FILE.exr[:SCALE]" (lat-long radiance).
-/// The brightest light lucent takes: irradiance (or radiance scale) per channel; far below where
-/// sums of many lights and samples could overflow a double.
-constexpr double kMaxLightValue = 1e12;
-
 std::string shortNumber(double v) {
   std::ostringstream o;
   o << v;
   return o.str();
 }
 
-/// An irradiance R,G,B (or a scale) each in [0, kMaxLightValue].
+/// An irradiance R,G,B (or a scale) each in [0, scene::kMaxLightValue].
 void checkLightValues(const Args& args, const std::string& text, const glm::dvec3& e) {
   for (int c = 0; c < 3; ++c)
-    if (!(e[c] >= 0 && e[c] <= kMaxLightValue))
+    if (!(e[c] >= 0 && e[c] <= scene::kMaxLightValue))
       args.fail("--light " + text + ": intensities must lie in [0, 1e12], not " +
                 shortNumber(e[c]));
-}
-
-/// The environment map's first texel that is negative or not finite, named by its pixel, as an
-/// error.
-void checkEnvironment(const Args& args, const std::string& text, const image::Image& img) {
-  for (std::size_t i = 0; i < img.pixels.size(); ++i) {
-    const glm::vec4& p = img.pixels[i];
-    for (int c = 0; c < 3; ++c)
-      if (!std::isfinite(p[c]) || p[c] < 0 || p[c] > kMaxLightValue)
-        args.fail("--light " + text + ": texel (" + std::to_string(i % std::size_t(img.width)) +
-                  ", " + std::to_string(i / std::size_t(img.width)) + ") has radiance " +
-                  shortNumber(p[c]) +
-                  "; an environment map needs finite values in [0, 1e12] (fix the EXR)");
-  }
-}
-
-/// A cube map when the image has the shape of a layout of scene/cube_layouts.hpp (6N x N, N x 6N,
-/// 4N x 3N, 3N x 4N); otherwise a lat-long probe (2:1 usually, though any shape maps).
-scene::EnvironmentLight environmentFromImage(const image::Image& img) {
-  auto radiance = [&](int x, int y) { return glm::vec3(img.at(x, y)); };
-  if (const auto layout = scene::cube::detectLayout(img.width, img.height))
-    return scene::cubeFromImage(*layout, scene::cube::faceSize(*layout, img.width, img.height),
-                                radiance);
-  scene::EnvironmentLight env;
-  env.width = img.width, env.height = img.height;
-  for (const auto& p : img.pixels) env.radiance.push_back(glm::vec3(p));
-  return env;
 }
 
 scene::Light parseLight(const Args& args, const std::string& text, double diag,
@@ -127,8 +96,10 @@ scene::Light parseLight(const Args& args, const std::string& text, double diag,
       return env;
     }
     const image::Image img = io::readExr(first);
-    checkEnvironment(args, text, img);
-    env = environmentFromImage(img);
+    auto radiance = [&](int x, int y) { return glm::vec3(img.at(x, y)); };
+    const std::string problem = scene::environmentTexelProblem(img.width, img.height, radiance);
+    if (!problem.empty()) args.fail("--light " + text + ": " + problem + " (fix the EXR)");
+    env = scene::environmentFromImage(img.width, img.height, radiance);
     env.source = first;
     env.scale = second.empty() ? 1.0 : parseNumber(second, what);
     checkLightValues(args, text, glm::dvec3(env.scale));

@@ -14,32 +14,13 @@
 
 namespace lucent::report {
 
-void Fingerprint::feed(const char* data, std::size_t n) {
-  for (std::size_t i = 0; i < n; ++i) {
-    mHash ^= static_cast<unsigned char>(data[i]);
-    mHash *= 1099511628211ull;
-  }
-}
-
-Fingerprint& Fingerprint::add(const std::string& text) {
-  feed(text.data(), text.size());
-  feed("\0", 1);  // "ab","c" differs from "a","bc"
-  return *this;
-}
-
-Fingerprint& Fingerprint::addFile(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError("cannot read '" + path + "' to fingerprint it; check its permissions");
+void addFile(util::Fingerprint& f, const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot read '" + path + "' to fingerprint it; check its permissions");
   char buffer[1 << 16];
-  while (f.read(buffer, sizeof buffer) || f.gcount() > 0) feed(buffer, std::size_t(f.gcount()));
-  feed("\0", 1);
-  return *this;
-}
-
-std::string Fingerprint::hex() const {
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", mHash);
-  return text;
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0)
+    f.addBytes(buffer, std::size_t(in.gcount()));
+  f.addBytes("", 1);
 }
 
 ResultCache::ResultCache(std::string folder, std::string sceneKey)
@@ -52,7 +33,7 @@ ResultCache::ResultCache(std::string folder, std::string sceneKey)
 }
 
 std::string ResultCache::stem(const std::string& technique, const std::string& knobs) const {
-  return technique + "-" + Fingerprint().add(mSceneKey).add(technique).add(knobs).hex();
+  return technique + "-" + util::Fingerprint().add(mSceneKey).add(technique).add(knobs).hex();
 }
 
 namespace {

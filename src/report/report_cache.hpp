@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <lucent/image/image.hpp>
+#include <lucent/util/fingerprint.hpp>
 
 namespace lucent::report {
 
@@ -25,18 +26,8 @@ struct SettingResult {
   image::Image image;  ///< linear radiance, coverage in A
 };
 
-/// 64-bit FNV-1a, chained: a fingerprint of the strings and files it is fed.
-class Fingerprint {
- public:
-  Fingerprint& add(const std::string& text);
-  /// The file's bytes (InputError naming it when it cannot be read).
-  Fingerprint& addFile(const std::string& path);
-  std::string hex() const;
-
- private:
-  void feed(const char* data, std::size_t n);
-  unsigned long long mHash = 14695981039346656037ull;
-};
+/// The file's bytes into `f` (InputError naming it when it cannot be read).
+void addFile(util::Fingerprint& f, const std::string& path);
 
 class ResultCache {
  public:

@@ -68,7 +68,7 @@ std::vector<KnobSpec> prtKnobs() {
                         Phase::Prepare),
       KnobSpec::integer("single-samples", 8, 1, 256,
                         "single scattering: deterministic depths along -n", Phase::Prepare),
-      detail::profileKnob()};
+      detail::profileKnob(Phase::Prepare)};
 }
 
 /// The knobs as settings, and the checks that need more than a range.
@@ -114,7 +114,7 @@ void checkPrecomputeBytes(std::size_t samples, std::size_t vertices, const prt::
 class PrtPrepared final : public Prepared {
  public:
   PrtPrepared(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats)
-      : mKnobs(knobs) {
+      : Prepared(knobs) {
     const prt::PrtSettings s = prtSettings(scene, knobs);
     mModel.cubeSize = s.transport.size;
     mModel.eta = scene.medium.material.eta;
@@ -225,7 +225,6 @@ class PrtPrepared final : public Prepared {
     return radiance;
   }
 
-  KnobValues mKnobs;
   prt::PrtModel mModel;
 };
 

@@ -86,7 +86,7 @@ void solveFigures(const render::QuadGraphFrame& frame, Statistics& stats) {
 class QuadGraphTechnique final : public Prepared {
  public:
   QuadGraphTechnique(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats)
-      : mKnobs(knobs), mPipeline(stats.timePrepare("graph", [&] {
+      : Prepared(knobs), mPipeline(stats.timePrepare("graph", [&] {
           return render::QuadGraphPipeline(scene.mesh, scene.meshName, pipelineOptions(knobs),
                                            stats.warnings, bool(scene.progress));
         })) {
@@ -177,7 +177,6 @@ class QuadGraphTechnique final : public Prepared {
     return b;
   }
 
-  KnobValues mKnobs;
   render::QuadGraphPipeline mPipeline;
 };
 

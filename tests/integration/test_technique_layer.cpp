@@ -5,9 +5,11 @@
 #include <doctest/doctest.h>
 
 #include <map>
+#include <tuple>
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -247,7 +249,7 @@ TEST_CASE(
     INFO(t.name);
     const std::vector<scene::Light> first = lightsFor(t, firstLight);
     const std::vector<scene::Light> second = lightsFor(t, secondLight);
-    const lt::KnobValues knobs = t.values();
+    const lt::KnobValues knobs = t.values(t.quickKnobs);  // reuse is exact at any accuracy
     VertexScene built("skin1", first);
     lt::Statistics stats;
     const std::unique_ptr<lt::Prepared> prepared = t.prepare(built.scene, knobs, stats);
@@ -271,6 +273,82 @@ TEST_CASE(
   }
 }
 
+namespace {
+/// Another valid value of knob `k` than `current` (a choice's next, a number halved or moved into
+/// its range), or empty when the knob has no other (text, files).
+std::string otherValue(const lt::KnobSpec& k, const std::string& current, const lt::Technique& t) {
+  std::vector<std::string> candidates;
+  if (k.kind == lt::KnobKind::Choice) {
+    const auto at = std::find(k.choices.begin(), k.choices.end(), current);
+    if (at != k.choices.end() && k.choices.size() > 1)
+      candidates.push_back(std::next(at) == k.choices.end() ? k.choices.front() : *std::next(at));
+  } else if (k.kind == lt::KnobKind::Integer || k.kind == lt::KnobKind::Real) {
+    const double v = std::stod(current);
+    const double lo = std::isfinite(k.min) ? k.min : -1e3, hi = std::isfinite(k.max) ? k.max : 1e3;
+    for (const double c : {v / 2, v + 1, v - 1, lo + (hi - lo) / 4})
+      candidates.push_back(k.kind == lt::KnobKind::Integer ? std::to_string(std::llround(c))
+                                                           : std::to_string(c));
+  }
+  for (const auto& c : candidates) {
+    if (c == current || (k.kind != lt::KnobKind::Choice && std::stod(c) == std::stod(current)))
+      continue;
+    try {
+      (void)t.values({{k.name, c}});
+      return c;
+    } catch (const std::exception&) {
+    }
+  }
+  return {};
+}
+}  // namespace
+
+TEST_CASE(
+    "Prepare once, change every frame-phase knob: the retuned frame equals a fresh run (no knob "
+    "that claims to invalidate only the frame is read at prepare)") {
+  // Every technique's own list: a new technique or knob is checked here with no edit.
+  const scene::DirectionalLight light{glm::normalize(glm::dvec3(1, 0.5, 0.2)), glm::dvec3(1)};
+  for (const auto& t : lt::appRegistry().all()) {
+    if (t.capabilities.needsCamera || t.name.rfind("test-", 0) == 0) continue;
+    INFO(t.name);
+    const VertexScene s("skin1", lightsFor(t, light));
+    const lt::KnobValues before = t.values(t.quickKnobs);
+    lt::KnobList changed = t.quickKnobs;
+    std::string what;
+    for (const auto& k : t.knobs)
+      if (k.invalidates == lt::Phase::Frame)
+        if (const std::string v = otherValue(k, before.text(k.name), t); !v.empty()) {
+          changed.emplace_back(k.name, v);
+          what += " " + k.name + "=" + v;
+        }
+    INFO("changed:" << what);
+    const lt::KnobValues after = t.values(changed);
+    lt::Statistics stats;
+    const std::unique_ptr<lt::Prepared> prepared = t.prepare(s.scene, before, stats);
+    const auto original = frameOf(*prepared, s);
+    prepared->retune(after);
+    std::vector<glm::dvec3> retuned, fresh;
+    std::string refusedFresh, refusedRetuned;  // a value a frame refuses is refused both ways
+    try {
+      fresh = frameOf(*t.prepare(s.scene, after, stats), s);
+    } catch (const lt::RequestError& e) {
+      refusedFresh = e.what();
+    }
+    try {
+      retuned = frameOf(*prepared, s);
+    } catch (const lt::RequestError& e) {
+      refusedRetuned = e.what();
+    }
+    CHECK(refusedRetuned == refusedFresh);
+    if (!refusedFresh.empty()) {
+      MESSAGE(t.name << ": changing" << what << " is refused: " << refusedFresh);
+      continue;
+    }
+    CHECK(image::relativeRms(retuned, fresh) < 1e-9);
+    MESSAGE(t.name << ": changing" << what << " moved the frame by "
+                   << image::relativeRms(retuned, original));
+  }
+}
+
 TEST_CASE(
     "Every technique that takes a profile renders every profile: finite, and the profile moves its "
     "radiance as it moves the reference's") {
@@ -278,8 +356,12 @@ TEST_CASE(
   // with a `profile` knob is checked here with no edit. Per channel, each technique's summed vertex
   // radiance with profile M over its own with the classic dipole must match the reference's ratio.
   const scene::DirectionalLight light{glm::normalize(glm::dvec3(1, 0.5, 0.2)), glm::dvec3(1)};
+  // Summed vertex radiance of (technique, profile, kind of light), each computed once.
+  std::map<std::tuple<std::string, std::string, bool>, glm::dvec3> sums;
   const auto summed = [&](const lt::Technique& t, const std::string& model,
                           const lt::Technique& lightsOf) {
+    const auto key = std::make_tuple(t.name, model, lightsOf.capabilities.directionalLights);
+    if (const auto it = sums.find(key); it != sums.end()) return it->second;
     const VertexScene s("skin1", lightsFor(lightsOf, light));
     lt::Statistics stats;
     // The profile is the multiple-scattering term's: an added single-scattering term is left out.
@@ -292,20 +374,17 @@ TEST_CASE(
       CHECK((v.x >= 0 && v.y >= 0 && v.z >= 0));
       sum += v;
     }
-    return sum;
+    return sums[key] = sum;
   };
   const lt::Technique& reference = *lt::appRegistry().find("reference");
   int checked = 0;
-  std::map<std::pair<std::string, bool>, glm::dvec3> referenceRatios;
   for (const auto& info : optics::kProfileModels) {
     const std::string model(info.name);
     for (const auto& t : lt::appRegistry().all()) {
       if (!t.knob("profile") || t.capabilities.needsCamera || t.name == "reference") continue;
-      // The reference under the same light as the technique (once per kind of light).
-      const auto key = std::make_pair(model, t.capabilities.directionalLights);
-      if (!referenceRatios.count(key))
-        referenceRatios[key] = summed(reference, model, t) / summed(reference, "dipole", t);
-      const glm::dvec3 referenceRatio = referenceRatios[key];
+      // The reference under the same light as the technique.
+      const glm::dvec3 referenceRatio =
+          summed(reference, model, t) / summed(reference, "dipole", t);
       const glm::dvec3 ratio = summed(t, model, t) / summed(t, "dipole", t);
       for (int c = 0; c < 3; ++c) {
         INFO(t.name << " profile " << model << " channel " << c << ": " << ratio[c]

@@ -1,10 +1,10 @@
 """The lucent plugin in Debian's ParaView 5.11, headless: pvbatch loads it, applies the Lucent Translucent
 filter and the Lucent Render View to built-in sources, saves screenshots and checks them.
 
-    xvfb-run -a pvbatch tests/paraview/test_lucent_plugin.py PLUGIN.so OUTDIR [TECHNIQUES.json]
+    xvfb-run -a pvbatch tests/paraview/test_lucent_plugin.py PLUGIN.so OUTDIR [TECHNIQUES.json [ENV.exr]]
 With TECHNIQUES.json (`lucent techniques --json`), it first checks that the filter's properties, generated at
 build time from the technique descriptions, are exactly the registry's knobs, with the same defaults, ranges
-and choices. Prints 'lucent paraview plugin: OK' and exits 0, or names the failed check and exits 1.
+and choices. With ENV.exr, an environment map, it relights a sphere by prt and turns the map. Prints 'lucent paraview plugin: OK' and exits 0, or names the failed check and exits 1.
 """
 import json
 import math
@@ -17,6 +17,7 @@ from vtkmodules.vtkIOImage import vtkPNGReader
 
 plugin, outdir = sys.argv[1], sys.argv[2]
 techniques_json = sys.argv[3] if len(sys.argv) > 3 else None
+environment_exr = sys.argv[4] if len(sys.argv) > 4 else None
 os.makedirs(outdir, exist_ok=True)
 LoadPlugin(plugin, remote=False, ns=globals())
 
@@ -44,7 +45,8 @@ def place_camera(view):
 
 
 # 0. The generated properties against the registry, as the CLI prints it (`lucent techniques --json`).
-SCENE_PROPERTIES = {"Input", "Material", "SizeMm", "LightDirection", "LightIrradiance", "Exposure", "Technique",
+SCENE_PROPERTIES = {"Input", "Material", "SizeMm", "LightDirection", "LightIrradiance", "EnvironmentFileName",
+                    "EnvironmentScale", "Exposure", "Technique",
                     "BudgetMs", "MaxError", "CalibrationDirectory"}  # the last three: Technique auto's
 
 
@@ -87,9 +89,10 @@ def check_knob_property(proxy, name, knob, max_bound=None):
 
 def check_generated_properties(path):
     registry = json.load(open(path))["techniques"]
-    # The filter holds the header-only techniques (an adapter's, such as quadgraph's TetGen, is not linked).
+    # The filter holds the header-only techniques and prt, whose adapter it compiles in (Eigen); quadgraph's
+    # (TetGen, AGPL) is not linked (vtk_plugin/Common/lucentFilterTechniques.h).
     offered = [t for t in registry if t["capabilities"]["per_vertex"] and not t["capabilities"]["needs_camera"]
-               and not t["required_library"]]
+               and (not t["required_library"] or t["name"] == "prt")]
     probe = LucentTranslucent(Input=Sphere())  # fresh: every property holds its XML default
     proxy = probe.SMProxy
     domain = proxy.GetProperty("Technique").GetDomain("list")
@@ -164,6 +167,39 @@ for i in range(data.GetNumberOfPoints()):
     (lit if x > 0.4 else unlit if x < -0.4 else []).append(b[0])
 if not (lit and unlit and min(lit) > 10 * max(unlit)):
     fail("the lit side (+x) is not far brighter than the far side")
+# 1b. prt under an environment map: turning the map (PrtRotate, a frame-phase knob) keeps the precomputation.
+def radiance_of(proxy):
+    array = servermanager.Fetch(proxy).GetPointData().GetArray("Radiance")
+    if array is None:
+        fail("prt under %s gave no Radiance" % environment_exr)
+    return [array.GetTuple3(i) for i in range(array.GetNumberOfTuples())]
+
+
+if environment_exr:
+    relit = LucentTranslucent(Input=sphere)
+    relit.SizeMm = 20.0
+    relit.Technique = "prt"
+    relit.EnvironmentFileName = environment_exr
+    relit.PrtCube = 8
+    relit.PrtMaxSamples = 1500
+    relit.PrtSingle = "off"
+    relit.UpdatePipeline()
+    relit_filter = relit.GetClientSideObject()
+    if relit_filter.GetPrepareReused():
+        fail("prt's first run claims to have reused a precomputation")
+    before, prepare_s = radiance_of(relit), relit_filter.GetPrepareSeconds()
+    if not all(math.isfinite(v) and v >= 0 for b in before for v in b) or max(b[0] for b in before) <= 0:
+        fail("prt under the environment map is not finite, non-negative and lit somewhere")
+    relit.PrtRotate = 90.0
+    relit.UpdatePipeline()
+    if not relit_filter.GetPrepareReused():
+        fail("turning the environment (PrtRotate) ran prt's precomputation again")
+    after = radiance_of(relit)
+    if max(abs(a[0] - b[0]) for a, b in zip(after, before)) <= 1e-6 * max(b[0] for b in before):
+        fail("turning the environment by 90 degrees left the radiance unchanged")
+    print("prt under %s: precompute %.2f s, a turn of the map %.3f s (the frame only)"
+          % (os.path.basename(environment_exr), prepare_s, relit_filter.GetFrameSeconds()))
+    Delete(relit)
 # 1a. Technique auto: the planner's choice, one of the offered techniques, with its reasons in field data.
 planned = LucentTranslucent(Input=sphere)
 planned.SizeMm = 20.0

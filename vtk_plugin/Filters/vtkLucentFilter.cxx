@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <thread>
 #include <vector>
@@ -25,8 +26,12 @@
 #include <lucent/optics/materials.hpp>
 #include <lucent/plan/explain.hpp>
 #include <lucent/plan/scene_features.hpp>
-#include <lucent/technique/core_techniques.hpp>
+#include <lucent/scene/environment_image.hpp>
+#include <lucent/technique/prepared_cache.hpp>
+#include <lucent/util/fingerprint.hpp>
 
+#include "io/exr_io.hpp"
+#include "lucentFilterTechniques.h"
 #include "lucentPolyDataMesh.h"
 #include "lucentSmpFor.h"
 #include "lucentSurfaceGather.h"
@@ -84,14 +89,43 @@ vtkSmartPointer<vtkUnsignedCharArray> colourArray(const std::vector<glm::dvec3>&
 }  // namespace
 
 lt::Registry& vtkLucentFilter::Techniques() {
-  static lt::Registry registry = lt::coreRegistry();
+  static lt::Registry registry = lucent::vtkadapter::filterTechniques();
   return registry;
 }
 
-vtkLucentFilter::vtkLucentFilter() : Technique(Techniques().defaultReference().name) {
+/// The last run's scene and prepare (kept while the surface is unchanged), and the environment map
+/// as last read.
+struct vtkLucentFilter::KeptRun {
+  std::string geometry;  ///< fingerprint of what `scene` was built from; empty: nothing kept
+  lt::SceneDescription scene;
+  vtkSmartPointer<vtkPolyData> millimetres;  ///< the surface in mm, which `caster` holds
+  std::unique_ptr<vtkLucentRayCaster> caster;
+  lt::PreparedCache prepared;
+  std::string environmentPath;
+  std::filesystem::file_time_type environmentTime;
+  lucent::scene::EnvironmentLight environment;  ///< radiance as read, scale 1
+  ///@{ Progress of the run, reported from the calling thread only.
+  std::thread::id caller;
+  std::string stage;
+  int stages = 0;
+  ///@}
+};
+
+vtkLucentFilter::vtkLucentFilter()
+    : Technique(Techniques().defaultReference().name), LastRun(std::make_unique<KeptRun>()) {
   this->SetController(vtkMultiProcessController::GetGlobalController());
 }
-vtkLucentFilter::~vtkLucentFilter() { this->SetController(nullptr); }
+vtkLucentFilter::~vtkLucentFilter() {
+  this->LastRun->prepared.clear();  // before the scene it may point into
+  this->SetController(nullptr);
+}
+
+void vtkLucentFilter::SetEnvironmentFileName(const char* path) {
+  const std::string value = path ? path : "";
+  if (value == this->EnvironmentFileName) return;
+  this->EnvironmentFileName = value;
+  this->Modified();
+}
 
 void vtkLucentFilter::SetMaterial(const char* name) {
   const std::string value = name ? name : "";
@@ -164,6 +198,8 @@ void vtkLucentFilter::PrintSelf(ostream& os, vtkIndent indent) {
      << indent << "LightDirection: " << this->LightDirection[0] << " " << this->LightDirection[1]
      << " " << this->LightDirection[2] << "\n"
      << indent << "LightIrradiance: " << this->LightIrradiance << "\n"
+     << indent << "EnvironmentFileName: " << this->EnvironmentFileName << "\n"
+     << indent << "EnvironmentScale: " << this->EnvironmentScale << "\n"
      << indent << "Exposure: " << this->Exposure << "\n"
      << indent << "BudgetMs: " << this->BudgetMs << "\n"
      << indent << "MaxError: " << this->MaxError << "\n"
@@ -273,6 +309,31 @@ glm::dvec3 unitTowardLight(const double direction[3]) {
         "LightDirection must be a finite, non-zero direction towards the light, e.g. 0 0 1");
   return toward / length;
 }
+/// What a kept scene was built from: the whole surface, the inner bodies and the scale.
+std::string geometryFingerprint(const lucent::vtkadapter::PolyDataMesh& whole, vtkDataObject* input,
+                                double mmPerUnit) {
+  lucent::util::Fingerprint f;
+  f.addArray(whole.mesh.positions).addArray(whole.mesh.triangles).addValue(mmPerUnit);
+  for (const auto& body : lucent::vtkadapter::innerBodiesOf(input))
+    f.add(body.material)
+        .addArray(body.surface.mesh.positions)
+        .addArray(body.surface.mesh.triangles);
+  return f.hex();
+}
+
+/// The environment map in `path`, checked texel by texel.
+lucent::scene::EnvironmentLight readEnvironment(const std::string& path) {
+  const lucent::image::Image img = lucent::io::readExr(path);
+  auto radiance = [&](int x, int y) { return glm::vec3(img.at(x, y)); };
+  const std::string problem =
+      lucent::scene::environmentTexelProblem(img.width, img.height, radiance);
+  if (!problem.empty())
+    throw lt::RequestError("EnvironmentFileName '" + path + "': " + problem + " (fix the EXR)");
+  auto env = lucent::scene::environmentFromImage(img.width, img.height, radiance);
+  env.source = path;
+  return env;
+}
+
 /// The whole surface's vertex points that are this rank's own points, in its order.
 lt::ShadeRequest localRequest(const lucent::scene::TriangleMesh& whole,
                               const std::vector<vtkIdType>& wholeIndex) {
@@ -344,6 +405,69 @@ std::vector<std::string> vtkLucentFilter::PlanTechnique(Request& request,
   return lp::explain(plan, request.budget);
 }
 
+lt::SceneDescription& vtkLucentFilter::SceneFor(vtkDataObject* input,
+                                                lucent::vtkadapter::PolyDataMesh& whole,
+                                                const Request& request, const MediumSetup& medium) {
+  KeptRun& run = *this->LastRun;
+  const double mmPerUnit = millimetresPerUnit(whole.mesh, this->SizeMm);
+  // A medium beyond the material (a scan) is not fingerprinted: such a scene is never kept.
+  const std::string geometry = medium ? "" : geometryFingerprint(whole, input, mmPerUnit);
+  lt::SceneDescription& scene = run.scene;
+  if (geometry.empty() || geometry != run.geometry) {
+    run.prepared.clear();  // before the scene it may point into
+    run.geometry.clear();
+    scene = lt::SceneDescription();
+    scene.meshName = "the filter's input";
+    scene.mesh = std::move(whole.mesh);
+    run.millimetres = scaleToMillimetres(scene.mesh, whole.triangles->GetPolys(), mmPerUnit);
+    run.caster = std::make_unique<vtkLucentRayCaster>(run.millimetres);
+    scene.vertexNormals = scene.mesh.vertexNormals();
+    scene.caster = run.caster.get();
+    scene.parallelFor = lucent::vtkadapter::smpFor;
+    scene.inclusions = inclusionsOf(input, mmPerUnit, *run.caster, scene.rayEpsilon());
+    run.geometry = geometry;
+  }
+  scene.medium = lt::Medium();
+  scene.medium.material = request.material;
+  if (medium) medium(scene.medium, mmPerUnit);
+  this->SetLights(scene, request);
+  // Progress from the calling thread only (VTK's events are not thread-safe); each stage moves
+  // the bar half of the way that is left, so it never goes back.
+  run.caller = std::this_thread::get_id();
+  run.stage.clear();
+  run.stages = 0;
+  scene.progress = [this, &run](const std::string& name, double f) {
+    if (std::this_thread::get_id() != run.caller) return;
+    if (name != run.stage) run.stage = name, ++run.stages;
+    this->UpdateProgress(1 - std::pow(0.5, run.stages - 1) * (1 - 0.5 * std::clamp(f, 0.0, 1.0)));
+  };
+  return scene;
+}
+
+void vtkLucentFilter::SetLights(lt::SceneDescription& scene, const Request& request) {
+  if (this->EnvironmentFileName.empty()) {
+    scene.lights = {
+        lucent::scene::DirectionalLight{request.towardLight, glm::dvec3(this->LightIrradiance)}};
+    return;
+  }
+  KeptRun& run = *this->LastRun;
+  const std::string& path = this->EnvironmentFileName;
+  std::error_code ec;
+  const auto time = std::filesystem::last_write_time(path, ec);
+  if (ec)
+    throw lt::RequestError("EnvironmentFileName '" + path + "' cannot be read (" + ec.message() +
+                           "); give an OpenEXR environment map, or leave it empty for the "
+                           "directional light");
+  if (path != run.environmentPath || time != run.environmentTime) {
+    run.environmentPath.clear();
+    run.environment = readEnvironment(path);
+    run.environmentPath = path, run.environmentTime = time;
+  }
+  lucent::scene::EnvironmentLight env = run.environment;
+  env.scale = this->EnvironmentScale;
+  scene.lights = {std::move(env)};
+}
+
 int vtkLucentFilter::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                  vtkInformationVector* outputVector) {
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0]);
@@ -387,38 +511,17 @@ int vtkLucentFilter::ShadeSurface(vtkDataObject* input, vtkPolyData* output,
     // The output keeps the input's coordinates (it must line up with the user's other data); only
     // the computation is in millimetres.
     output->ShallowCopy(surfaces.local.triangles);
-    lt::SceneDescription scene;
-    scene.meshName = "the filter's input";
-    scene.mesh = std::move(surfaces.whole.mesh);
-    const double mmPerUnit = millimetresPerUnit(scene.mesh, this->SizeMm);
-    const auto millimetres =
-        scaleToMillimetres(scene.mesh, surfaces.whole.triangles->GetPolys(), mmPerUnit);
-    const vtkLucentRayCaster caster(millimetres);
-    scene.vertexNormals = scene.mesh.vertexNormals();
-    scene.medium.material = request.material;
-    scene.inclusions = inclusionsOf(input, mmPerUnit, caster, scene.rayEpsilon());
-    if (medium) medium(scene.medium, mmPerUnit);
-    scene.lights = {
-        lucent::scene::DirectionalLight{request.towardLight, glm::dvec3(this->LightIrradiance)}};
-    scene.caster = &caster;
-    scene.parallelFor = lucent::vtkadapter::smpFor;
-    // Progress from the calling thread only (VTK's events are not thread-safe); each stage moves
-    // the bar half of the way that is left, so it never goes back.
-    const std::thread::id caller = std::this_thread::get_id();
-    std::string stage;
-    int stages = 0;
-    scene.progress = [&](const std::string& name, double f) {
-      if (std::this_thread::get_id() != caller) return;
-      if (name != stage) stage = name, ++stages;
-      this->UpdateProgress(1 - std::pow(0.5, stages - 1) * (1 - 0.5 * std::clamp(f, 0.0, 1.0)));
-    };
+    lt::SceneDescription& scene = this->SceneFor(input, surfaces.whole, request, medium);
     // Every rank plans from the whole surface, so all choose the same.
     const std::vector<std::string> plan =
         request.technique ? std::vector<std::string>()
                           : this->PlanTechnique(request, scene, lt::vertexRequest(scene.mesh));
     const lt::ShadeRequest shade = localRequest(scene.mesh, surfaces.wholeIndex);
-    const lt::Rendered result =
-        Techniques().render(*request.technique, scene, request.knobs, shade);
+    const lt::Rendered result = this->LastRun->prepared.render(
+        Techniques(), *request.technique, scene, request.knobs, shade, this->LastRun->geometry);
+    this->PrepareReused = this->LastRun->prepared.reused();
+    this->PrepareSeconds = result.stats.totalPrepareSeconds();
+    this->FrameSeconds = result.stats.totalFrameSeconds();
     for (const auto& w : result.stats.warnings)
       vtkWarningMacro(<< request.technique->name << ": " << w);
     this->SampleCount = vtkIdType(result.stats.samples);

@@ -24,6 +24,7 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,9 @@ struct Medium;
 struct SceneDescription;
 struct ShadeRequest;
 }  // namespace lucent::technique
+namespace lucent::vtkadapter {
+struct PolyDataMesh;
+}
 #endif
 
 class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
@@ -70,6 +74,27 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   vtkGetVector3Macro(LightDirection, double);
   vtkSetClampMacro(LightIrradiance, double, 0.0, 1.0e6);
   vtkGetMacro(LightIrradiance, double);
+  ///@}
+
+  ///@{
+  /// An environment map that lights the surface instead of the directional light: an OpenEXR file
+  /// holding a lat-long probe or a cube map (6N x N or N x 6N strips, 4N x 3N or 3N x 4N crosses),
+  /// its radiance times EnvironmentScale. Empty (the default): the directional light. prt needs
+  /// one; its knob prt.rotate turns it, and re-runs only the frame.
+  void SetEnvironmentFileName(const char* path);
+  const char* GetEnvironmentFileName() const { return this->EnvironmentFileName.c_str(); }
+  vtkSetClampMacro(EnvironmentScale, double, 0.0, 1.0e12);
+  vtkGetMacro(EnvironmentScale, double);
+  ///@}
+
+  ///@{
+  /// The last run: whether it reused the precomputation of the run before (the same surface,
+  /// technique and prepare-phase knobs, and the same material and light unless the technique's
+  /// frame takes them, lucent/technique/prepared_cache.hpp), and the seconds of its prepare and
+  /// frame.
+  vtkGetMacro(PrepareReused, bool);
+  vtkGetMacro(PrepareSeconds, double);
+  vtkGetMacro(FrameSeconds, double);
   ///@}
 
   ///@{
@@ -142,8 +167,8 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   vtkGetMacro(SampleCount, vtkIdType);
 
 #ifndef __VTK_WRAP__
-  /// The techniques the filter offers from: lucent's core techniques. Code may add its own (tests
-  /// do).
+  /// The techniques the filter offers from: lucent's core techniques and prt
+  /// (lucentFilterTechniques.h). Code may add its own (tests do).
   static lucent::technique::Registry& Techniques();
 #endif
 
@@ -154,11 +179,21 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   int FillInputPortInformation(int port, vtkInformation* info) override;
 #ifndef __VTK_WRAP__
   struct Request;  // material, technique, knobs and light of one run
+  struct KeptRun;  // the last run's scene and prepare, reused while they still hold
   /// Sets the medium beyond the material (a subclass's scan), given millimetres per data unit.
   using MediumSetup = std::function<void(lucent::technique::Medium&, double mmPerUnit)>;
   /// Shades `input` (surfaces) into `output`: the checks, the whole surface in millimetres, the
   /// technique, the arrays. 1 on success; 0 with the error reported.
   int ShadeSurface(vtkDataObject* input, vtkPolyData* output, const MediumSetup& medium);
+  /// The scene of this run: the kept one when the surface and inner bodies are those it was built
+  /// from (and no medium beyond the material is set), else a new one; lights, material and progress
+  /// set for this run.
+  lucent::technique::SceneDescription& SceneFor(vtkDataObject* input,
+                                                lucent::vtkadapter::PolyDataMesh& whole,
+                                                const Request& request, const MediumSetup& medium);
+  /// The light of this run into `scene`: the environment map (read again only when the file name
+  /// or its modification time changes) or the directional light.
+  void SetLights(lucent::technique::SceneDescription& scene, const Request& request);
   /// Checks the material, technique, knobs and light against the technique's own description
   /// (with "auto": reads the planner's calibration).
   Request CheckRequest() const;
@@ -182,7 +217,12 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   double BudgetMs = 0.0;
   double MaxError = 0.0;
   std::string CalibrationDirectory;
+  std::string EnvironmentFileName;
+  double EnvironmentScale = 1.0;
   std::string ChosenTechnique;
+  bool PrepareReused = false;
+  double PrepareSeconds = 0, FrameSeconds = 0;
+  std::unique_ptr<KeptRun> LastRun;
   vtkIdType SampleCount = 0;
   vtkMultiProcessController* Controller = nullptr;
 

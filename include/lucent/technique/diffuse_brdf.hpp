@@ -37,7 +37,7 @@ inline std::string brdfLimitHolds(const SceneDescription& scene, const KnobValue
 
 class DiffuseBrdf final : public Prepared {
  public:
-  explicit DiffuseBrdf(const KnobValues& knobs) : mKnobs(knobs) {}
+  explicit DiffuseBrdf(const KnobValues& knobs) : Prepared(knobs) {}
 
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
@@ -71,8 +71,6 @@ class DiffuseBrdf final : public Prepared {
     const glm::dvec3 face = glm::normalize(scene.mesh.areaVector(p.triangle));
     return scene::irradianceAt(p.position, normal, face, scene.lights, *scene.caster, irr, id);
   }
-
-  KnobValues mKnobs;
 };
 
 }  // namespace detail

@@ -54,13 +54,14 @@ inline Capabilities dipoleSumCapabilities() {
   return c;
 }
 
-/// Places the samples (prepare), and at each frame lights them and sums with `Summation`.
+/// Places the samples (prepare), and at each frame lights them and sums with `Summation`, which
+/// reads its knobs from the frame's (Prepared::knobs).
 template <class Summation>
 class DipoleSum final : public Prepared {
  public:
   DipoleSum(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats,
             Summation summation)
-      : mKnobs(knobs), mSummation(std::move(summation)) {
+      : Prepared(knobs), mSummation(std::move(summation)) {
     const auto dipole = dipoleOf(scene.medium.material);
     const double mfp = dipole.minMeanFreePath();
     reference::SpacingChoice choice;
@@ -128,10 +129,9 @@ class DipoleSum final : public Prepared {
     stats.figures["lit_samples"] = double(truth.stats().litSamples);
     if (truth.tableNodes()) stats.figures["profile_table_nodes"] = double(truth.tableNodes());
     scene.checkCancelled();
-    return mSummation(truth, scene, request, stats);
+    return mSummation(truth, scene, request, mKnobs, stats);
   }
 
-  KnobValues mKnobs;
   Summation mSummation;
   reference::SurfaceSamples mSamples;
 };
@@ -172,15 +172,15 @@ inline Technique referenceTechnique() {
   t.referenceKnobs = {{"fraction", "0.125"}};
   detail::setDipoleSumRange(t);
   t.prepare = [](const SceneDescription& scene, const KnobValues& knobs, Statistics& stats) {
-    return detail::makeDipoleSum(scene, knobs, stats,
-                                 [](const auto& truth, const SceneDescription& s,
-                                    const ShadeRequest& request, Statistics& st) {
-                                   st.figures["rd_evaluations"] = double(request.points.size()) *
-                                                                  double(truth.stats().litSamples);
-                                   return st.timeFrame("evaluation", [&] {
-                                     return radiosityAt(truth, s, request, "Rd sum");
-                                   });
-                                 });
+    return detail::makeDipoleSum(
+        scene, knobs, stats,
+        [](const auto& truth, const SceneDescription& s, const ShadeRequest& request,
+           const KnobValues&, Statistics& st) {
+          st.figures["rd_evaluations"] =
+              double(request.points.size()) * double(truth.stats().litSamples);
+          return st.timeFrame("evaluation",
+                              [&] { return radiosityAt(truth, s, request, "Rd sum"); });
+        });
   };
   return withSingleScattering(std::move(t));
 }
@@ -202,21 +202,20 @@ inline Technique jensenBuhlerTechnique() {
   t.defaultSweep = {{"epsilon", {"1", "0.3", "0.1", "0.03"}}};
   detail::setDipoleSumRange(t);
   t.prepare = [](const SceneDescription& scene, const KnobValues& knobs, Statistics& stats) {
-    const double epsilon = knobs.real("epsilon");
-    return detail::makeDipoleSum(scene, knobs, stats,
-                                 [epsilon](const auto& truth, const SceneDescription& s,
-                                           const ShadeRequest& request, Statistics& st) {
-                                   using Truth = std::decay_t<decltype(truth)>;
-                                   using T = std::decay_t<decltype(truth.profile().eta)>;
-                                   static_assert(std::is_same_v<Truth, reference::DipoleTruth<T>>);
-                                   const auto tree = st.timeFrame("octree", [&] {
-                                     return reference::JensenBuhlerTree<T>(truth, epsilon);
-                                   });
-                                   st.figures["octree_nodes"] = double(tree.nodeCount());
-                                   return st.timeFrame("evaluation", [&] {
-                                     return radiosityAt(tree, s, request, "octree sum");
-                                   });
-                                 });
+    return detail::makeDipoleSum(
+        scene, knobs, stats,
+        [](const auto& truth, const SceneDescription& s, const ShadeRequest& request,
+           const KnobValues& frameKnobs, Statistics& st) {
+          const double epsilon = frameKnobs.real("epsilon");
+          using Truth = std::decay_t<decltype(truth)>;
+          using T = std::decay_t<decltype(truth.profile().eta)>;
+          static_assert(std::is_same_v<Truth, reference::DipoleTruth<T>>);
+          const auto tree = st.timeFrame(
+              "octree", [&] { return reference::JensenBuhlerTree<T>(truth, epsilon); });
+          st.figures["octree_nodes"] = double(tree.nodeCount());
+          return st.timeFrame("evaluation",
+                              [&] { return radiosityAt(tree, s, request, "octree sum"); });
+        });
   };
   return withSingleScattering(std::move(t));
 }

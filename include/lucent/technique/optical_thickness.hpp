@@ -58,7 +58,7 @@ inline std::string tauMapInRange(const SceneDescription& scene, const KnobValues
 class TauLut final : public Prepared {
  public:
   TauLut(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats)
-      : mKnobs(knobs),
+      : Prepared(knobs),
         mMedia(stats.timePrepare("voxelize",
                                  [&] { return mediaGridOf(scene, int(knobs.integer("voxels"))); })),
         mSurface(
@@ -147,7 +147,6 @@ class TauLut final : public Prepared {
     });
   }
 
-  KnobValues mKnobs;
   VoxelMedia mMedia;  ///< its grid moves into mPaths (buildPaths)
   voxel::SurfaceVoxels mSurface;
   voxel::SurfacePaths mPaths;

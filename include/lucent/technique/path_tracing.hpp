@@ -86,7 +86,7 @@ inline void pathTracerWarnings(const reference::PathTracerStats& st, Statistics&
 
 class PathTracing final : public Prepared {
  public:
-  explicit PathTracing(const KnobValues& knobs) : mKnobs(knobs) {}
+  explicit PathTracing(const KnobValues& knobs) : Prepared(knobs) {}
 
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
@@ -137,7 +137,6 @@ class PathTracing final : public Prepared {
   }
 
  private:
-  KnobValues mKnobs;
 };
 
 }  // namespace detail

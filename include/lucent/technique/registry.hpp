@@ -4,6 +4,7 @@
 /// (core_techniques.hpp for the header-only ones, an adapter for those that need a heavy library);
 /// front ends never name one.
 #include <deque>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -87,17 +88,32 @@ class Registry {
                        "defaults: " + (able.empty() ? "none" : able) + ")");
   }
 
-  /// check, checkRange, prepare, one frame, radiance completed from radiosity.
-  Rendered render(const Technique& t, const SceneDescription& scene, const KnobValues& knobs,
-                  const ShadeRequest& request) const {
+  /// check and checkRange, then the technique's prepare.
+  std::unique_ptr<Prepared> prepare(const Technique& t, const SceneDescription& scene,
+                                    const KnobValues& knobs, const ShadeRequest& request,
+                                    Statistics& stats) const {
     check(t, scene, request);
     checkRange(t, scene, knobs);
+    std::unique_ptr<Prepared> prepared = t.prepare(scene, knobs, stats);
+    scene.checkCancelled();
+    return prepared;
+  }
+
+  /// One frame on what prepare built, radiance completed from radiosity.
+  static FrameResult frame(Prepared& prepared, const SceneDescription& scene,
+                           const ShadeRequest& request, Statistics& stats) {
+    FrameResult out = prepared.frame(scene, request, stats);
+    completeRadiance(out, request, scene.medium.material.eta);
+    return out;
+  }
+
+  /// prepare and one frame.
+  Rendered render(const Technique& t, const SceneDescription& scene, const KnobValues& knobs,
+                  const ShadeRequest& request) const {
     Rendered out;
     const Stopwatch clock;
-    std::unique_ptr<Prepared> prepared = t.prepare(scene, knobs, out.stats);
-    scene.checkCancelled();
-    out.frame = prepared->frame(scene, request, out.stats);
-    completeRadiance(out.frame, request, scene.medium.material.eta);
+    const std::unique_ptr<Prepared> prepared = prepare(t, scene, knobs, request, out.stats);
+    out.frame = frame(*prepared, scene, request, out.stats);
     out.seconds = clock.seconds();
     return out;
   }

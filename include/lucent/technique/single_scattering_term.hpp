@@ -47,7 +47,12 @@ inline reference::HomogeneousScattering singleScatteringMedium(const optics::Mat
 class WithSingleScattering final : public Prepared {
  public:
   WithSingleScattering(std::unique_ptr<Prepared> inner, const KnobValues& knobs)
-      : mInner(std::move(inner)), mKnobs(knobs) {}
+      : Prepared(knobs), mInner(std::move(inner)) {}
+
+  void retune(const KnobValues& knobs) override {
+    Prepared::retune(knobs);
+    mInner->retune(knobs);  // the inner technique reads the same values
+  }
 
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
@@ -88,7 +93,6 @@ class WithSingleScattering final : public Prepared {
   }
 
   std::unique_ptr<Prepared> mInner;
-  KnobValues mKnobs;
 };
 
 }  // namespace detail

@@ -35,13 +35,23 @@ struct FrameResult {
   double exitScale = 1;
 };
 
-/// What prepare built; a frame reads it.
+/// What prepare built, and the knobs; a frame reads both. A knob whose change invalidates only the
+/// frame (Phase::Frame) is read in frame(), from knobs(), so that retune takes new values of it
+/// without a new prepare (PreparedCache; the VTK filter turning prt's environment).
 class Prepared {
  public:
+  explicit Prepared(KnobValues knobs = {}) : mKnobs(std::move(knobs)) {}
   virtual ~Prepared() = default;
   /// Shades the request under the scene's current lights and material; adds its phases to `stats`.
   virtual FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                             Statistics& stats) = 0;
+  /// The knobs of the frames that follow: only frame-phase knobs may differ from those it was
+  /// prepared with (PreparedCache keys the prepare-phase ones).
+  virtual void retune(const KnobValues& knobs) { mKnobs = knobs; }
+  const KnobValues& knobs() const { return mKnobs; }
+
+ protected:
+  KnobValues mKnobs;
 };
 
 /// Values of one knob for the bench's default sweep.
@@ -118,8 +128,9 @@ inline optics::Dipole<double> dipoleOf(const optics::Material& m) {
 }
 
 /// The `profile` knob of the techniques that sum a diffusion profile; its choices are the core's
-/// list of models (optics/profile.hpp).
-inline KnobSpec profileKnob() {
+/// list of models (optics/profile.hpp). `phase`: Prepare where the profile is integrated into what
+/// prepare builds (prt's transport vectors).
+inline KnobSpec profileKnob(Phase phase = Phase::Frame) {
   std::vector<std::string> names;
   std::string help = "diffusion profile R(r):";
   for (const auto& info : optics::kProfileModels) {
@@ -127,7 +138,7 @@ inline KnobSpec profileKnob() {
     help += " " + std::string(info.name) + " = " + std::string(info.summary) + ";";
   }
   help.pop_back();
-  return KnobSpec::choice("profile", names, help, Phase::Frame);
+  return KnobSpec::choice("profile", names, help, phase);
 }
 
 /// The profile the knobs ask for, of the scene's material, in scalar T.

@@ -185,7 +185,7 @@ atlas::RingFilter ringFilter(const Profile& profile, const KnobValues& knobs, do
 class Tsis final : public Prepared {
  public:
   Tsis(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats)
-      : mKnobs(knobs), mAtlas(buildAtlas(scene, knobs, stats)) {}
+      : Prepared(knobs), mAtlas(buildAtlas(scene, knobs, stats)) {}
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
     atlas::ImportanceSamples samples = drawSamples(mAtlas, scene, mKnobs, stats);
@@ -207,14 +207,13 @@ class Tsis final : public Prepared {
   }
 
  private:
-  KnobValues mKnobs;
   std::shared_ptr<const atlas::AtlasSurface> mAtlas;
 };
 
 class Hybrid final : public Prepared {
  public:
   Hybrid(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats)
-      : mKnobs(knobs), mAtlas(buildAtlas(scene, knobs, stats)) {}
+      : Prepared(knobs), mAtlas(buildAtlas(scene, knobs, stats)) {}
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
     const auto profile = profileOf<double>(scene.medium.material, mKnobs);
@@ -235,13 +234,12 @@ class Hybrid final : public Prepared {
   }
 
  private:
-  KnobValues mKnobs;
   std::shared_ptr<const atlas::AtlasSurface> mAtlas;
 };
 
 class Tsm final : public Prepared {
  public:
-  explicit Tsm(const KnobValues& knobs) : mKnobs(knobs) {}
+  explicit Tsm(const KnobValues& knobs) : Prepared(knobs) {}
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
     const auto rd = profileOf<double>(scene.medium.material, mKnobs);
@@ -259,7 +257,6 @@ class Tsm final : public Prepared {
   }
 
  private:
-  KnobValues mKnobs;
 };
 
 inline Capabilities textureSpaceCapabilities() {

@@ -32,7 +32,7 @@ inline std::vector<voxel::ScatteringCoefficients> scatteringOf(
 class VoxelSingle final : public Prepared {
  public:
   VoxelSingle(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats)
-      : mKnobs(knobs),
+      : Prepared(knobs),
         mInclusions(scene.inclusions.size()),
         mMedia(stats.timePrepare(
             "voxelize", [&] { return mediaGridOf(scene, int(knobs.integer("voxels"))); })) {
@@ -73,7 +73,6 @@ class VoxelSingle final : public Prepared {
   }
 
  private:
-  KnobValues mKnobs;
   std::size_t mInclusions;  ///< inclusions the grid was voxelised with
   VoxelMedia mMedia;
 };

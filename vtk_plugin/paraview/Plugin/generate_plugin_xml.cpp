@@ -17,6 +17,8 @@
 #include <lucent/plan/planner.hpp>
 #include <lucent/technique/core_techniques.hpp>
 
+#include "lucentFilterTechniques.h"
+
 namespace {
 namespace lt = lucent::technique;
 constexpr const char* kFilterMarker = "<!-- @LUCENT_FILTER_TECHNIQUE_PROPERTIES@ -->";
@@ -187,7 +189,7 @@ int main(int argc, char** argv) {
   std::stringstream text;
   text << in.rdbuf();
   std::string xml = text.str();
-  const lt::Registry registry = lt::coreRegistry();  // what vtkLucentFilter::Techniques() holds
+  const lt::Registry registry = lucent::vtkadapter::filterTechniques();  // vtkLucentFilter's
   if (!in || !replaceMarker(xml, kFilterMarker, filterProperties(registry)) ||
       !replaceMarker(xml, kViewMarker, viewProperties(registry)) || !copySharedProperties(xml)) {
     std::cerr << "generate_plugin_xml: " << argv[1] << " lacks " << kFilterMarker << ", "
