@@ -203,7 +203,10 @@ void vtkLucentFilter::PrintSelf(ostream& os, vtkIndent indent) {
      << indent << "Exposure: " << this->Exposure << "\n"
      << indent << "BudgetMs: " << this->BudgetMs << "\n"
      << indent << "MaxError: " << this->MaxError << "\n"
-     << indent << "CalibrationDirectory: " << this->CalibrationDirectory << "\n";
+     << indent << "CalibrationDirectory: " << this->CalibrationDirectory << "\n"
+     << indent << "PrepareReused: " << this->PrepareReused << "\n"
+     << indent << "PrepareSeconds: " << this->PrepareSeconds << "\n"
+     << indent << "FrameSeconds: " << this->FrameSeconds << "\n";
   for (const auto& [name, value] : this->Knobs) os << indent << name << ": " << value << "\n";
 }
 
