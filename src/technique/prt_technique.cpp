@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include <lucent/prt/relight.hpp>
+#include <lucent/prt/specular.hpp>
 #include <lucent/technique/single_scattering_term.hpp>
 #include <lucent/technique/technique.hpp>
 #include <lucent/technique/validity.hpp>
@@ -53,6 +54,13 @@ std::vector<KnobSpec> prtKnobs() {
                        "(Ng et al. 2003; better with few terms), or the largest"),
       KnobSpec::real("rotate", "0", -360, 360, "degrees",
                      "turn the environment about +y (a frame: no new precomputation)"),
+      KnobSpec::choice("specular", {"off", "on"},
+                       "add the smooth boundary's reflection of the environment (Fresnel "
+                       "reflectance, the pre-convolved map in the mirror direction; no "
+                       "self-shadowing, as in the paper)"),
+      KnobSpec::real("specular-lobe", "0", 0, 100000, "",
+                     "Phong exponent of the lobe the environment is pre-convolved with (0: a "
+                     "mirror); a lobe costs (6 cube^2)^2 operations a frame"),
       KnobSpec::choice("single", {"on", "off"}, "add single scattering", Phase::Prepare),
       KnobSpec::real("g", "0", -0.99, 0.99, "",
                      "HG mean cosine; sigma_s = sigma_s' / (1 - g) keeps the reduced coefficient",
@@ -102,7 +110,8 @@ void checkPrecomputeBytes(std::size_t samples, std::size_t vertices, const prt::
   const double texels = 6.0 * s.transport.size * s.transport.size;
   auto terms = [texels](std::size_t k) { return k == 0 ? texels : std::min<double>(k, texels); };
   const double bytes = double(samples) * 2 * terms(s.sampleTerms) * 8 +  // samples and nodes
-                       double(vertices) * (1 + phaseTerms) * terms(s.vertexTerms) * 10;
+                       double(vertices) * (1 + phaseTerms) * terms(s.vertexTerms) *
+                           double(sizeof(prt::QuantizedVector::Index) + 6);
   if (bytes <= kMaxPrecomputeBytes) return;
   std::ostringstream why;
   why << "technique 'prt' would hold about " << bytes / double(1u << 30) << " GiB of transport "
@@ -157,6 +166,7 @@ class PrtPrepared final : public Prepared {
     FrameResult out;
     out.radiance = stats.timeFrame("interpolate",
                                    [&] { return pointsRadiance(scene, request, shading, stats); });
+    if (mKnobs.text("specular") == "on") addSpecular(scene, request, envs, out.radiance, stats);
     return out;
   }
 
@@ -198,6 +208,39 @@ class PrtPrepared final : public Prepared {
     stats.figures["phase_terms"] = double(mModel.phase.terms());
   }
 
+  /// Point i's barycentrics on its triangle, shading normal and direction to the eye (head-on
+  /// without a camera).
+  struct View {
+    glm::dvec3 barycentric, normal, toEye;
+  };
+  static View viewAt(const SceneDescription& scene, const ShadeRequest& request, std::size_t i) {
+    const reference::ShadingPoint& p = request.points[i];
+    View v;
+    v.barycentric = {1 - p.u - p.v, p.u, p.v};
+    v.normal = scene::shadingNormal(scene.mesh, scene.vertexNormals, p.triangle, v.barycentric);
+    v.toEye = request.camera ? glm::normalize(request.camera->eye - p.position) : v.normal;
+    return v;
+  }
+
+  /// The paper's specular component at every point (Sec. 4).
+  void addSpecular(const SceneDescription& scene, const ShadeRequest& request,
+                   const std::vector<const scene::EnvironmentLight*>& envs,
+                   std::vector<glm::dvec3>& radiance, Statistics& stats) const {
+    const prt::SpecularEnvironment specular = stats.timeFrame("specular_map", [&] {
+      return prt::SpecularEnvironment(envs, mModel.cubeSize,
+                                      mKnobs.real("rotate") * optics::kPi / 180,
+                                      mKnobs.real("specular-lobe"), scene.parallelFor);
+    });
+    stats.timeFrame("specular", [&] {
+      scene.parallelFor(radiance.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+          const View v = viewAt(scene, request, i);
+          radiance[i] += specular.radiance(v.normal, v.toEye, scene.medium.material.eta);
+        }
+      });
+    });
+  }
+
   std::vector<glm::dvec3> pointsRadiance(const SceneDescription& scene, const ShadeRequest& request,
                                          const prt::VertexShading& shading,
                                          Statistics& stats) const {
@@ -206,13 +249,9 @@ class PrtPrepared final : public Prepared {
     scene.parallelFor(radiance.size(), [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {
         const reference::ShadingPoint& p = request.points[i];
-        const glm::dvec3 w(1 - p.u - p.v, p.u, p.v);
-        const glm::dvec3 normal =
-            scene::shadingNormal(scene.mesh, scene.vertexNormals, p.triangle, w);
-        const glm::dvec3 toEye =
-            request.camera ? glm::normalize(request.camera->eye - p.position) : normal;
-        radiance[i] =
-            prt::pointRadiance(mModel, shading, scene.mesh.triangles[p.triangle], w, normal, toEye);
+        const View v = viewAt(scene, request, i);
+        radiance[i] = prt::pointRadiance(mModel, shading, scene.mesh.triangles[p.triangle],
+                                         v.barycentric, v.normal, v.toEye);
         // A truncated light or phase expansion can dip below zero where the true value is small:
         // clamped, and counted.
         if (radiance[i].x < 0 || radiance[i].y < 0 || radiance[i].z < 0) {

@@ -44,13 +44,14 @@ struct VertexShading {
 inline VertexShading relightVertices(const PrtModel& model, const std::vector<glm::vec3>& light,
                                      const util::ParallelFor& parallelFor) {
   VertexShading out;
+  const LightChannels channels(light);
   out.diffuse.resize(model.diffuse.size());
   out.single.resize(model.single.size());
   parallelFor(model.diffuse.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t v = begin; v < end; ++v) {
-      out.diffuse[v] = dot(model.diffuse[v], light);
+      out.diffuse[v] = dot(model.diffuse[v], channels);
       if (v < model.single.size())
-        for (const QuantizedVector& k : model.single[v]) out.single[v].push_back(dot(k, light));
+        for (const QuantizedVector& k : model.single[v]) out.single[v].push_back(dot(k, channels));
     }
   });
   return out;
