@@ -41,54 +41,56 @@ lt::SceneDescription litScene(double irradiance) {
   scene.medium.material = *lucent::optics::findMaterial("skin1");
   return scene;
 }
+
+/// The counting technique in a registry of its own, a lit scene, two points and a cache.
+struct Counting {
+  int prepares = 0;
+  lt::Registry registry;
+  lt::ShadeRequest request;
+  lt::PreparedCache cache;
+  lt::SceneDescription scene = litScene(1);
+  explicit Counting(bool dynamicMaterial) {
+    registry.add(countingTechnique(prepares, dynamicMaterial));
+    request.points.resize(2);
+  }
+  const lt::Technique& technique() const { return registry.get("test-counting"); }
+  /// The second point's radiance, rendered through the cache.
+  double value(const lt::KnobList& knobs, const std::string& geometry) {
+    const lt::Technique& t = technique();
+    return cache.render(registry, t, scene, t.values(knobs), request, geometry).frame.radiance[1].x;
+  }
+};
 }  // namespace
 
 TEST_CASE("A kept prepare is reused for frame-phase changes and rebuilt for the rest") {
-  int prepares = 0;
-  lt::Registry registry;
-  registry.add(countingTechnique(prepares, /*dynamicMaterial=*/false));
-  const lt::Technique& t = registry.get("test-counting");
-  lt::ShadeRequest request;
-  request.points.resize(2);
-  lt::PreparedCache cache;
-  lt::SceneDescription scene = litScene(1);
-
-  auto value = [&](const lt::KnobList& knobs, const std::string& geometry) {
-    return cache.render(registry, t, scene, t.values(knobs), request, geometry).frame.radiance[1].x;
-  };
-  CHECK(value({}, "mesh A") == 1);
-  CHECK_FALSE(cache.reused());
-  CHECK(value({{"gain", "3"}}, "mesh A") == 1);  // a frame knob: the same prepare
-  CHECK(cache.reused());
-  scene.lights = litScene(4).lights;  // dynamicLight: the frame reads the new light
-  CHECK(value({}, "mesh A") == 4);
-  CHECK(cache.reused());
-  const lt::Rendered again = cache.render(registry, t, scene, t.values(), request, "mesh A");
+  Counting c(/*dynamicMaterial=*/false);
+  CHECK(c.value({}, "mesh A") == 1);
+  CHECK_FALSE(c.cache.reused());
+  CHECK(c.value({{"gain", "3"}}, "mesh A") == 1);  // a frame knob: the same prepare
+  CHECK(c.cache.reused());
+  c.scene.lights = litScene(4).lights;  // dynamicLight: the frame reads the new light
+  CHECK(c.value({}, "mesh A") == 4);
+  CHECK(c.cache.reused());
+  const lt::Rendered again = c.cache.render(c.registry, c.technique(), c.scene,
+                                            c.technique().values(), c.request, "mesh A");
   CHECK(again.stats.samples == 7);  // the prepare's statistics travel with it
   CHECK(again.stats.figures.at("prepare_reused") == 1);
 
-  CHECK(value({{"level", "2"}}, "mesh A") == 2 * 2 * 4);  // a prepare knob: prepare 2
-  CHECK_FALSE(cache.reused());
-  CHECK(value({{"level", "2"}}, "mesh B") == 2 * 3 * 4);  // new geometry: prepare 3
-  scene.medium.material = *lucent::optics::findMaterial("marble");
-  CHECK(value({{"level", "2"}}, "mesh B") == 2 * 4 * 4);  // !dynamicMaterial: prepare 4
-  CHECK(prepares == 4);
-  cache.clear();
-  CHECK(value({{"level", "2"}}, "mesh B") == 2 * 5 * 4);
+  CHECK(c.value({{"level", "2"}}, "mesh A") == 2 * 2 * 4);  // a prepare knob: prepare 2
+  CHECK_FALSE(c.cache.reused());
+  CHECK(c.value({{"level", "2"}}, "mesh B") == 2 * 3 * 4);  // new geometry: prepare 3
+  c.scene.medium.material = *lucent::optics::findMaterial("marble");
+  CHECK(c.value({{"level", "2"}}, "mesh B") == 2 * 4 * 4);  // !dynamicMaterial: prepare 4
+  CHECK(c.prepares == 4);
+  c.cache.clear();
+  CHECK(c.value({{"level", "2"}}, "mesh B") == 2 * 5 * 4);
 }
 
 TEST_CASE("A technique whose frame takes the material keeps its prepare across a material change") {
-  int prepares = 0;
-  lt::Registry registry;
-  registry.add(countingTechnique(prepares, /*dynamicMaterial=*/true));
-  const lt::Technique& t = registry.get("test-counting");
-  lt::ShadeRequest request;
-  request.points.resize(1);
-  lt::PreparedCache cache;
-  lt::SceneDescription scene = litScene(1);
-  cache.render(registry, t, scene, t.values(), request, "mesh");
-  scene.medium.material = *lucent::optics::findMaterial("marble");
-  cache.render(registry, t, scene, t.values(), request, "mesh");
-  CHECK(cache.reused());
-  CHECK(prepares == 1);
+  Counting c(/*dynamicMaterial=*/true);
+  c.value({}, "mesh");
+  c.scene.medium.material = *lucent::optics::findMaterial("marble");
+  c.value({}, "mesh");
+  CHECK(c.cache.reused());
+  CHECK(c.prepares == 1);
 }
