@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # libFuzzer (clang) on lucent's input paths: mesh files (.obj, .ply, .stl), the EXR environment reader,
 # the .vti and .vdb volume readers, the CLI's arguments. Builds build-fuzz/ with ASan + UBSan, runs each
-# target for LUCENT_FUZZ_SECONDS (default 30, within CI's 40-minute budget; run longer by hand) from the
+# target for LUCENT_FUZZ_SECONDS (default 20, within CI's 40-minute budget; run longer by hand) from the
 # seed corpus in fuzz/corpus/, and fails on any finding (the input is kept in build-fuzz/findings/: copy it
 # into fuzz/corpus/TARGET/ as a regression input).
 set -euo pipefail
@@ -12,7 +12,7 @@ scripts/lib/apt-install-missing.sh clang libclang-rt-14-dev
     -DLUCENT_BUILD_TESTS=OFF >/dev/null
 targets=(fuzz_mesh_obj fuzz_mesh_ply fuzz_mesh_stl fuzz_exr fuzz_volume fuzz_volume_vdb fuzz_cli_args)
 cmake --build build-fuzz -j"$(nproc)" --target "${targets[@]}"
-seconds=${LUCENT_FUZZ_SECONDS:-30}
+seconds=${LUCENT_FUZZ_SECONDS:-20}
 mkdir -p build-fuzz/findings
 export ASAN_OPTIONS="detect_leaks=1"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"

@@ -8,5 +8,5 @@ scripts/lib/apt-install-missing.sh chromium   # the report page's browser test (
 scripts/build.sh
 (cd build && ctest --output-on-failure -j"$(nproc)")
 scripts/sanitize.sh      # the unit and integration tests under ASan + UBSan
-scripts/fuzz.sh          # libFuzzer on the mesh, EXR, volume and argument readers, 30 s each
+scripts/fuzz.sh          # libFuzzer on the mesh, EXR, volume and argument readers, 20 s each
 scripts/paraview-plugin.sh

@@ -17,7 +17,7 @@
 #include <lucent/plan/planner.hpp>
 #include <lucent/technique/core_techniques.hpp>
 
-#include "lucentFilterTechniques.h"
+#include "vtkLucentFilter.h"
 
 namespace {
 namespace lt = lucent::technique;
@@ -189,7 +189,7 @@ int main(int argc, char** argv) {
   std::stringstream text;
   text << in.rdbuf();
   std::string xml = text.str();
-  const lt::Registry registry = lucent::vtkadapter::filterTechniques();  // vtkLucentFilter's
+  const lt::Registry& registry = vtkLucentFilter::Techniques();
   if (!in || !replaceMarker(xml, kFilterMarker, filterProperties(registry)) ||
       !replaceMarker(xml, kViewMarker, viewProperties(registry)) || !copySharedProperties(xml)) {
     std::cerr << "generate_plugin_xml: " << argv[1] << " lacks " << kFilterMarker << ", "
