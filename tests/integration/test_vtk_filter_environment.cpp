@@ -89,7 +89,8 @@ void setPrtKnobs(vtkLucentFilter* filter) {
 
 TEST_CASE(
     "vtkLucentFilter: prt under an environment map equals the application's prt on the same "
-    "surface, and turning the map (prt.rotate) re-runs only the frame") {
+    "surface, turning the map (prt.rotate) re-runs only the frame, and a new surface, size or "
+    "material prepares again") {
   const lucent::test::TempDir dir;
   const std::string skyPath = dir / "sky.exr";
   const auto sky = writeSky(skyPath);
@@ -132,6 +133,15 @@ TEST_CASE(
 
   // A new material: prt's prepare integrates the profile, so it is rebuilt.
   filter->SetMaterial("marble");
+  filter->Update();
+  CHECK_FALSE(filter->GetPrepareReused());
+  filter->Modified();  // run again, nothing changed: kept
+  filter->Update();
+  CHECK(filter->GetPrepareReused());
+  sphere->SetThetaResolution(20);  // another surface
+  filter->Update();
+  CHECK_FALSE(filter->GetPrepareReused());
+  filter->SetSizeMm(25);  // the same surface at another size
   filter->Update();
   CHECK_FALSE(filter->GetPrepareReused());
 }

@@ -103,6 +103,7 @@ struct vtkLucentFilter::KeptRun {
   lt::PreparedCache prepared;
   std::string environmentPath;
   std::filesystem::file_time_type environmentTime;
+  std::uintmax_t environmentSize = 0;
   lucent::scene::EnvironmentLight environment;  ///< radiance as read, scale 1
   ///@{ Progress of the run, reported from the calling thread only.
   std::thread::id caller;
@@ -447,26 +448,32 @@ lt::SceneDescription& vtkLucentFilter::SceneFor(vtkDataObject* input,
   return scene;
 }
 
-void vtkLucentFilter::SetLights(lt::SceneDescription& scene, const Request& request) {
+void vtkLucentFilter::ReadEnvironment() {
+  const std::string& path = this->EnvironmentFileName;
+  if (path.empty()) return;
+  KeptRun& run = *this->LastRun;
+  std::error_code timeError, sizeError;
+  const auto time = std::filesystem::last_write_time(path, timeError);
+  const auto size = std::filesystem::file_size(path, sizeError);
+  if (timeError || sizeError)
+    throw lt::RequestError("EnvironmentFileName '" + path + "' cannot be read (" +
+                           (timeError ? timeError : sizeError).message() +
+                           "); give an OpenEXR environment map, or leave it empty for the "
+                           "directional light");
+  if (path == run.environmentPath && time == run.environmentTime && size == run.environmentSize)
+    return;
+  run.environmentPath.clear();
+  run.environment = readEnvironment(path);
+  run.environmentPath = path, run.environmentTime = time, run.environmentSize = size;
+}
+
+void vtkLucentFilter::SetLights(lt::SceneDescription& scene, const Request& request) const {
   if (this->EnvironmentFileName.empty()) {
     scene.lights = {
         lucent::scene::DirectionalLight{request.towardLight, glm::dvec3(this->LightIrradiance)}};
     return;
   }
-  KeptRun& run = *this->LastRun;
-  const std::string& path = this->EnvironmentFileName;
-  std::error_code ec;
-  const auto time = std::filesystem::last_write_time(path, ec);
-  if (ec)
-    throw lt::RequestError("EnvironmentFileName '" + path + "' cannot be read (" + ec.message() +
-                           "); give an OpenEXR environment map, or leave it empty for the "
-                           "directional light");
-  if (path != run.environmentPath || time != run.environmentTime) {
-    run.environmentPath.clear();
-    run.environment = readEnvironment(path);
-    run.environmentPath = path, run.environmentTime = time;
-  }
-  lucent::scene::EnvironmentLight env = run.environment;
+  lucent::scene::EnvironmentLight env = this->LastRun->environment;  // ReadEnvironment's
   env.scale = this->EnvironmentScale;
   scene.lights = {std::move(env)};
 }
@@ -487,6 +494,7 @@ int vtkLucentFilter::ShadeSurface(vtkDataObject* input, vtkPolyData* output,
   const bool distributed = this->Controller && this->Controller->GetNumberOfProcesses() > 1;
   try {
     request = this->CheckRequest();
+    this->ReadEnvironment();  // before the ranks agree: a file one rank cannot read stops all
     if (distributed && !lucent::vtkadapter::innerBodiesOf(input).empty())
       throw lt::RequestError("inner bodies (" +
                              std::string(lucent::vtkadapter::kInnerMaterialArray) +

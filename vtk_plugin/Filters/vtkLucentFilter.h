@@ -191,9 +191,12 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   lucent::technique::SceneDescription& SceneFor(vtkDataObject* input,
                                                 lucent::vtkadapter::PolyDataMesh& whole,
                                                 const Request& request, const MediumSetup& medium);
-  /// The light of this run into `scene`: the environment map (read again only when the file name
-  /// or its modification time changes) or the directional light.
-  void SetLights(lucent::technique::SceneDescription& scene, const Request& request);
+  /// Reads EnvironmentFileName, checked, unless the file's name, modification time and size are
+  /// those last read (after rewriting it in place, call Modified()).
+  void ReadEnvironment();
+  /// The light of this run into `scene`: the environment map ReadEnvironment read, or the
+  /// directional light.
+  void SetLights(lucent::technique::SceneDescription& scene, const Request& request) const;
   /// Checks the material, technique, knobs and light against the technique's own description
   /// (with "auto": reads the planner's calibration).
   Request CheckRequest() const;
