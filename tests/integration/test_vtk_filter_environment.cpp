@@ -10,6 +10,7 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
+#include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -184,4 +185,43 @@ TEST_CASE(
   filter->Update();
   CHECK_MESSAGE(error.empty(), error);
   CHECK(filter->GetOutput()->GetNumberOfPoints() > 0);
+}
+
+TEST_CASE("vtkLucentFilter: an inner body's material or shape changed alone prepares again") {
+  auto sphereOf = [](double radius) {
+    vtkNew<vtkSphereSource> s;
+    s->SetRadius(radius);
+    s->SetThetaResolution(24);
+    s->SetPhiResolution(12);
+    s->Update();
+    auto out = vtkSmartPointer<vtkPolyData>::New();
+    out->DeepCopy(s->GetOutput());
+    return out;
+  };
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, sphereOf(4.0));
+  auto inner = sphereOf(2.0);
+  lucent::vtkadapter::markInnerBody(inner, "ketchup");
+  blocks->SetBlock(1, inner);
+  vtkNew<vtkLucentFilter> filter;
+  filter->SetInputData(blocks);
+  filter->SetMaterial("marble");
+  filter->SetTechnique("taulut");
+  filter->SetKnob("taulut.voxels", "16");
+  filter->Update();
+  REQUIRE(filter->GetOutput()->GetNumberOfPoints() > 0);
+  filter->Modified();
+  filter->Update();
+  CHECK(filter->GetPrepareReused());  // nothing changed
+
+  lucent::vtkadapter::markInnerBody(inner, "skin1");  // the same shape, another material
+  blocks->Modified();
+  filter->Update();
+  CHECK_FALSE(filter->GetPrepareReused());
+
+  auto smaller = sphereOf(1.5);  // the same material, another shape
+  lucent::vtkadapter::markInnerBody(smaller, "skin1");
+  blocks->SetBlock(1, smaller);
+  filter->Update();
+  CHECK_FALSE(filter->GetPrepareReused());
 }
