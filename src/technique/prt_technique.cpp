@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include <lucent/prt/relight.hpp>
@@ -152,10 +153,12 @@ class PrtPrepared final : public Prepared {
     std::vector<const scene::EnvironmentLight*> envs;
     for (const auto& light : scene.lights)
       if (const auto* env = std::get_if<scene::EnvironmentLight>(&light)) envs.push_back(env);
+    const double angle = mKnobs.real("rotate") * optics::kPi / 180;
+    const std::vector<glm::vec3> cube = stats.timeFrame(
+        "environment_cube", [&] { return scene::sumOnCube(envs, mModel.cubeSize, angle); });
     std::size_t kept = 0;
     const std::vector<glm::vec3> light = stats.timeFrame("light_vector", [&] {
-      return prt::lightVector(envs, mModel.cubeSize, mKnobs.real("rotate") * optics::kPi / 180,
-                              std::size_t(mKnobs.integer("light-terms")),
+      return prt::lightVector(cube, mModel.cubeSize, std::size_t(mKnobs.integer("light-terms")),
                               mKnobs.text("selection") == "area" ? prt::Selection::AreaWeighted
                                                                  : prt::Selection::Magnitude,
                               &kept);
@@ -163,10 +166,17 @@ class PrtPrepared final : public Prepared {
     stats.figures["light_terms_kept"] = double(kept);
     const prt::VertexShading shading = stats.timeFrame(
         "relight", [&] { return prt::relightVertices(mModel, light, scene.parallelFor); });
+    // The paper's specular component (Sec. 4), pre-convolved on the frame's cube.
+    std::optional<prt::SpecularEnvironment> specular;
+    if (mKnobs.text("specular") == "on")
+      stats.timeFrame("specular_map", [&] {
+        specular.emplace(envs, cube, mModel.cubeSize, angle, mKnobs.real("specular-lobe"),
+                         scene.parallelFor);
+      });
     FrameResult out;
-    out.radiance = stats.timeFrame("interpolate",
-                                   [&] { return pointsRadiance(scene, request, shading, stats); });
-    if (mKnobs.text("specular") == "on") addSpecular(scene, request, envs, out.radiance, stats);
+    out.radiance = stats.timeFrame("interpolate", [&] {
+      return pointsRadiance(scene, request, shading, specular ? &*specular : nullptr, stats);
+    });
     return out;
   }
 
@@ -208,56 +218,31 @@ class PrtPrepared final : public Prepared {
     stats.figures["phase_terms"] = double(mModel.phase.terms());
   }
 
-  /// Point i's barycentrics on its triangle, shading normal and direction to the eye (head-on
-  /// without a camera).
-  struct View {
-    glm::dvec3 barycentric, normal, toEye;
-  };
-  static View viewAt(const SceneDescription& scene, const ShadeRequest& request, std::size_t i) {
-    const reference::ShadingPoint& p = request.points[i];
-    View v;
-    v.barycentric = {1 - p.u - p.v, p.u, p.v};
-    v.normal = scene::shadingNormal(scene.mesh, scene.vertexNormals, p.triangle, v.barycentric);
-    v.toEye = request.camera ? glm::normalize(request.camera->eye - p.position) : v.normal;
-    return v;
-  }
-
-  /// The paper's specular component at every point (Sec. 4).
-  void addSpecular(const SceneDescription& scene, const ShadeRequest& request,
-                   const std::vector<const scene::EnvironmentLight*>& envs,
-                   std::vector<glm::dvec3>& radiance, Statistics& stats) const {
-    const prt::SpecularEnvironment specular = stats.timeFrame("specular_map", [&] {
-      return prt::SpecularEnvironment(envs, mModel.cubeSize,
-                                      mKnobs.real("rotate") * optics::kPi / 180,
-                                      mKnobs.real("specular-lobe"), scene.parallelFor);
-    });
-    stats.timeFrame("specular", [&] {
-      scene.parallelFor(radiance.size(), [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) {
-          const View v = viewAt(scene, request, i);
-          radiance[i] += specular.radiance(v.normal, v.toEye, scene.medium.material.eta);
-        }
-      });
-    });
-  }
-
+  /// Radiance at every point: the relit vertices interpolated, viewed through the boundary, with
+  /// the specular component added where it is asked for.
   std::vector<glm::dvec3> pointsRadiance(const SceneDescription& scene, const ShadeRequest& request,
                                          const prt::VertexShading& shading,
+                                         const prt::SpecularEnvironment* specular,
                                          Statistics& stats) const {
     std::vector<glm::dvec3> radiance(request.points.size());
     std::atomic<std::size_t> clamped{0};
     scene.parallelFor(radiance.size(), [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {
         const reference::ShadingPoint& p = request.points[i];
-        const View v = viewAt(scene, request, i);
-        radiance[i] = prt::pointRadiance(mModel, shading, scene.mesh.triangles[p.triangle],
-                                         v.barycentric, v.normal, v.toEye);
+        const glm::dvec3 w(1 - p.u - p.v, p.u, p.v);
+        const glm::dvec3 normal =
+            scene::shadingNormal(scene.mesh, scene.vertexNormals, p.triangle, w);
+        const glm::dvec3 toEye =
+            request.camera ? glm::normalize(request.camera->eye - p.position) : normal;
+        radiance[i] =
+            prt::pointRadiance(mModel, shading, scene.mesh.triangles[p.triangle], w, normal, toEye);
         // A truncated light or phase expansion can dip below zero where the true value is small:
         // clamped, and counted.
         if (radiance[i].x < 0 || radiance[i].y < 0 || radiance[i].z < 0) {
           radiance[i] = glm::max(radiance[i], glm::dvec3(0));
           ++clamped;
         }
+        if (specular) radiance[i] += specular->radiance(normal, toEye, scene.medium.material.eta);
       }
     });
     stats.figures["negative_points_clamped"] = double(clamped);

@@ -3,7 +3,6 @@
 // surface, with Embree), and a frame-phase knob (prt.rotate) re-runs only the frame.
 #include <doctest/doctest.h>
 
-#include <cmath>
 #include <string>
 #include <vector>
 
@@ -17,6 +16,7 @@
 #include <vtkSphereSource.h>
 
 #include <lucent/image/image.hpp>
+#include <lucent/image/metrics.hpp>
 #include <lucent/optics/materials.hpp>
 #include <lucent/technique/registry.hpp>
 
@@ -49,14 +49,6 @@ std::vector<glm::dvec3> radianceOf(vtkPolyData* out) {
   for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
     v.emplace_back(a->GetComponent(i, 0), a->GetComponent(i, 1), a->GetComponent(i, 2));
   return v;
-}
-
-/// Relative RMS of a against b, over every channel.
-double relativeRms(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
-  double num = 0, den = 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (int c = 0; c < 3; ++c) num += std::pow(a[i][c] - b[i][c], 2), den += b[i][c] * b[i][c];
-  return std::sqrt(num / den);
 }
 
 const lt::KnobList kPrtKnobs = {{"cube", "8"}, {"max-samples", "1500"}, {"single", "off"}};
@@ -110,7 +102,7 @@ TEST_CASE(
   CHECK(filter->GetPrepareSeconds() > 0);
   const auto expected = applicationPrt(filter->GetOutput(), sky, "0");
   REQUIRE(expected.size() == first.size());
-  const double agree = relativeRms(first, expected);
+  const double agree = lucent::image::relativeRms(first, expected);
   MESSAGE("filter's prt against the application's: relative RMS " << agree);
   CHECK(agree < 0.01);
 
@@ -119,8 +111,9 @@ TEST_CASE(
   const auto turned = radianceOf(filter->GetOutput());
   CHECK(filter->GetPrepareReused());
   CHECK(filter->GetPrepareSeconds() == 0);
-  CHECK(relativeRms(turned, first) > 0.1);  // the sun moved
-  const double turnedAgree = relativeRms(turned, applicationPrt(filter->GetOutput(), sky, "90"));
+  CHECK(lucent::image::relativeRms(turned, first) > 0.1);  // the sun moved
+  const double turnedAgree =
+      lucent::image::relativeRms(turned, applicationPrt(filter->GetOutput(), sky, "90"));
   MESSAGE("turned 90 degrees, kept prepare against a fresh one: relative RMS " << turnedAgree);
   CHECK(turnedAgree < 0.01);
 

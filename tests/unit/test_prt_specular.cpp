@@ -23,7 +23,8 @@ TEST_CASE("PRT specular: a uniform environment reflects Fr(eta, cos) L, mirror o
   const scene::EnvironmentLight sky = latLong(16, 8, glm::vec3(2.0f));
   const double eta = 1.4;
   for (const double lobe : {0.0, 20.0, 400.0}) {
-    const prt::SpecularEnvironment specular({&sky}, 8, 0.3, lobe, util::serialFor);
+    const prt::SpecularEnvironment specular({&sky}, scene::sumOnCube({&sky}, 8, 0.3), 8, 0.3, lobe,
+                                            util::serialFor);
     for (const glm::dvec3 n : {glm::dvec3(0, 1, 0), glm::normalize(glm::dvec3(1, -2, 0.5))}) {
       glm::dvec3 t = glm::normalize(glm::cross(n, glm::dvec3(0.3, 0.1, 0.9)));
       for (const double angle : {0.0, 1.0, 1.5}) {  // radians from the normal
@@ -54,7 +55,8 @@ TEST_CASE("PRT specular mirror: one bright texel is seen only in its mirror dire
   }
   REQUIRE(toTexel != glm::dvec3(0));
   const double angle = 0.7;
-  const prt::SpecularEnvironment specular({&sky}, 8, angle, 0, util::serialFor);
+  const prt::SpecularEnvironment specular({&sky}, scene::sumOnCube({&sky}, 8, angle), 8, angle, 0,
+                                          util::serialFor);
   const glm::dvec3 turned = scene::turnAboutY(toTexel, angle);
   // Head-on at the normal facing the turned texel: the mirror direction is the normal itself.
   CHECK(specular.radiance(turned, turned, 1.3).x ==

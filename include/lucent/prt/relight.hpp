@@ -17,22 +17,23 @@
 
 namespace lucent::prt {
 
-/// The environments summed on a cube `size` across, turned by `angle` radians about +y, as Haar
-/// coefficients with the `terms` largest kept (0: all), dense with zeros elsewhere.
-inline std::vector<glm::vec3> lightVector(const std::vector<const scene::EnvironmentLight*>& envs,
-                                          int size, double angle, std::size_t terms,
+/// Haar coefficients of the environment `cube` (scene::sumOnCube) with the `terms` largest kept
+/// (0: all), dense with zeros elsewhere.
+inline std::vector<glm::vec3> lightVector(std::vector<glm::vec3> cube, int size, std::size_t terms,
                                           Selection selection, std::size_t* kept = nullptr) {
-  std::vector<glm::vec3> cube(std::size_t(6) * size * size, glm::vec3(0));
-  for (const scene::EnvironmentLight* env : envs) {
-    const scene::EnvironmentLight c = scene::resampleToCube(*env, size, angle);
-    for (std::size_t i = 0; i < cube.size(); ++i) cube[i] += c.radiance[i] * float(c.scale);
-  }
   haarForwardCube(cube, size);
   const SparseVector largest = keepLargest(cube, size, terms == 0 ? cube.size() : terms, selection);
   std::vector<glm::vec3> light(cube.size(), glm::vec3(0));
   for (std::size_t i = 0; i < largest.size(); ++i) light[largest.index[i]] = largest.value[i];
   if (kept) *kept = largest.size();
   return light;
+}
+
+/// The same of the environments summed on a cube `size` across, turned by `angle` radians about +y.
+inline std::vector<glm::vec3> lightVector(const std::vector<const scene::EnvironmentLight*>& envs,
+                                          int size, double angle, std::size_t terms,
+                                          Selection selection, std::size_t* kept = nullptr) {
+  return lightVector(scene::sumOnCube(envs, size, angle), size, terms, selection, kept);
 }
 
 /// The light's dot products with every vertex's vectors.

@@ -19,13 +19,15 @@ namespace lucent::prt {
 class SpecularEnvironment {
  public:
   /// `envs` turned by `angle` radians about +y. `exponent` 0: a mirror, each environment read at
-  /// its own resolution; else the lobe cos^exponent about the mirror direction, pre-convolved on a
-  /// cube `size` across (normalised over the texels it covers: a uniform environment stays
-  /// uniform). The convolution costs (6 size^2)^2 multiply-adds.
-  SpecularEnvironment(std::vector<const scene::EnvironmentLight*> envs, int size, double angle,
-                      double exponent, const util::ParallelFor& parallelFor)
+  /// its own resolution; else the lobe cos^exponent about the mirror direction, pre-convolved on
+  /// `cube`, the environments summed on a cube `size` across and turned (scene::sumOnCube; a frame
+  /// has it already), normalised over the texels it covers: a uniform environment stays uniform.
+  /// The convolution costs (6 size^2)^2 multiply-adds.
+  SpecularEnvironment(std::vector<const scene::EnvironmentLight*> envs,
+                      const std::vector<glm::vec3>& cube, int size, double angle, double exponent,
+                      const util::ParallelFor& parallelFor)
       : mEnvs(std::move(envs)), mAngle(angle), mSize(size) {
-    if (exponent > 0) convolve(exponent, parallelFor);
+    if (exponent > 0) convolve(cube, exponent, parallelFor);
   }
 
   /// Radiance reflected towards `toEye` by a smooth boundary of relative index `eta` with
@@ -46,14 +48,11 @@ class SpecularEnvironment {
   }
 
   /// L_lobe(r) = sum_k L_k Omega_k max(0, r.w_k)^n / sum_k Omega_k max(0, r.w_k)^n.
-  void convolve(double exponent, const util::ParallelFor& parallelFor) {
-    const std::size_t texels = std::size_t(scene::cube::kFaces) * mSize * mSize;
-    std::vector<glm::dvec3> cube(texels, glm::dvec3(0)), direction(texels);
+  void convolve(const std::vector<glm::vec3>& cube, double exponent,
+                const util::ParallelFor& parallelFor) {
+    const std::size_t texels = cube.size();
+    std::vector<glm::dvec3> direction(texels);
     std::vector<double> solidAngle(texels);
-    for (const scene::EnvironmentLight* env : mEnvs) {
-      const scene::EnvironmentLight c = scene::resampleToCube(*env, mSize, mAngle);
-      for (std::size_t k = 0; k < texels; ++k) cube[k] += glm::dvec3(c.radiance[k]) * c.scale;
-    }
     for (std::size_t k = 0; k < texels; ++k) {
       direction[k] = scene::cube::texelCentre(k, mSize);
       solidAngle[k] = scene::cube::texelSolidAngle(int(k / mSize % mSize), int(k % mSize), mSize);
@@ -67,7 +66,7 @@ class SpecularEnvironment {
           const double c = glm::dot(direction[i], direction[k]);
           if (c <= 0) continue;
           const double w = solidAngle[k] * std::pow(c, exponent);
-          sum += w * cube[k], weight += w;
+          sum += w * glm::dvec3(cube[k]), weight += w;
         }
         mConvolved[i] = sum / weight;  // weight > 0: the texel's own direction is in its lobe
       }

@@ -129,6 +129,18 @@ inline EnvironmentLight resampleToCube(const EnvironmentLight& env, int size, do
   return out;
 }
 
+/// The radiance of several environments (each times its scale) summed on one cube `size` across,
+/// turned by `angle` radians about +y: what a PRT frame lights with.
+inline std::vector<glm::vec3> sumOnCube(const std::vector<const EnvironmentLight*>& envs, int size,
+                                        double angle) {
+  std::vector<glm::vec3> cube(std::size_t(cube::kFaces) * size * size, glm::vec3(0));
+  for (const EnvironmentLight* env : envs) {
+    const EnvironmentLight c = resampleToCube(*env, size, angle);
+    for (std::size_t i = 0; i < cube.size(); ++i) cube[i] += c.radiance[i] * float(c.scale);
+  }
+  return cube;
+}
+
 /// The cube map of a lat-long environment (resampleToCube, unturned).
 inline EnvironmentLight latLongToCube(const EnvironmentLight& latLong, int size) {
   return resampleToCube(latLong, size);

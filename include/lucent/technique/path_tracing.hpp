@@ -135,8 +135,6 @@ class PathTracing final : public Prepared {
     pathTracerWarnings(st, stats);
     return out;
   }
-
- private:
 };
 
 }  // namespace detail

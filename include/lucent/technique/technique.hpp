@@ -36,7 +36,7 @@ struct FrameResult {
 };
 
 /// What prepare built, and the knobs; a frame reads both. A knob whose change invalidates only the
-/// frame (Phase::Frame) is read in frame(), from knobs(), so that retune takes new values of it
+/// frame (Phase::Frame) is read in frame(), from mKnobs, so that retune takes new values of it
 /// without a new prepare (PreparedCache; the VTK filter turning prt's environment).
 class Prepared {
  public:
@@ -48,7 +48,6 @@ class Prepared {
   /// The knobs of the frames that follow: only frame-phase knobs may differ from those it was
   /// prepared with (PreparedCache keys the prepare-phase ones).
   virtual void retune(const KnobValues& knobs) { mKnobs = knobs; }
-  const KnobValues& knobs() const { return mKnobs; }
 
  protected:
   KnobValues mKnobs;
