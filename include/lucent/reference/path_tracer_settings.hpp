@@ -16,6 +16,13 @@ enum class ScatteringOrders { All, Single, Multiple };
 /// against each other).
 enum class EnvironmentStrategy { Escape, Connect };
 
+/// How point and directional lights reach a medium behind a refracting boundary: manifold
+/// next-event estimation from every scattering vertex through one refraction (light subpaths only
+/// for light that reflected on its way in), or light subpaths joined to camera segments for all of
+/// it (the older estimator: no single scattering, heavy-tailed; kept to check the two against each
+/// other).
+enum class DeltaLightStrategy { Manifold, Joins };
+
 struct PathTracerSettings {
   int samplesPerPixel = 16;
   std::uint64_t seed = 1;
@@ -29,12 +36,29 @@ struct PathTracerSettings {
   /// Escaping paths count only if two successive scattering events see each other along a straight
   /// segment: exactly the paths a delta light can reach through a refracting boundary (for checks).
   bool connectableOnly = false;
+  DeltaLightStrategy deltaLights = DeltaLightStrategy::Manifold;
+  /// Edge steps without a refraction point the manifold search floods across from the facets with
+  /// one: a curved surface focuses light through bands of facets (manifold_next_event.hpp).
+  int manifoldGap = 2;
   int lightSubpaths =
       1;  ///< light subpaths per light and camera sample (delta lights, Fresnel boundary)
   int maxLightVertices = 16;  ///< targets kept per light subpath
   double guideRadius =
       0;  ///< mm: scale of the light-entry sampling around the camera's entry point; 0 = auto
   double rayEpsilon = 1e-6;  ///< mm: offset of new rays off a surface
+};
+
+/// What the manifold next-event searches found (manifold_next_event.hpp).
+struct ManifoldSearchStats {
+  std::uint64_t searches = 0, solutions = 0;
+  std::uint64_t noSolution = 0;  ///< searches that found no refraction point (shadow, or a miss)
+  std::uint64_t multiple = 0;    ///< searches with two or more solutions (overlapping beams)
+  std::uint64_t capped = 0;      ///< floods that reached their facet cap: more may lie beyond
+
+  void add(const ManifoldSearchStats& o) {
+    searches += o.searches, solutions += o.solutions, noSolution += o.noSolution;
+    multiple += o.multiple, capped += o.capped;
+  }
 };
 
 struct PathTracerStats {
@@ -48,6 +72,7 @@ struct PathTracerStats {
   std::uint64_t nonFiniteSamples = 0;      ///< dropped NaN/inf estimates (must stay 0)
   std::uint64_t rouletteTerminations = 0;  ///< camera paths ended by Russian roulette
   MediumSamplingStats medium;
+  ManifoldSearchStats manifold;
 
   void add(const PathTracerStats& o) {
     cameraSamples += o.cameraSamples, scatterEvents += o.scatterEvents;
@@ -58,6 +83,7 @@ struct PathTracerStats {
     nonFiniteSamples += o.nonFiniteSamples,
         medium.majorantViolations += o.medium.majorantViolations;
     rouletteTerminations += o.rouletteTerminations;
+    manifold.add(o.manifold);
   }
 };
 

@@ -8,12 +8,13 @@
 /// - environment: camera paths that leave the scene look it up (every scattering order);
 /// - point and directional lights, every interface index-matched: next-event estimation from each
 ///   scattering vertex, through null interfaces (every order);
-/// - point and directional lights behind a refracting interface: light subpaths
-/// (light_subpaths.hpp)
-///   joined to each camera segment at a point drawn by equiangular sampling (Kulla & Fajardo 2012),
-///   whose pdf cancels the 1/d^2 of the join (distance-sampled joins have infinite variance). Paths
-///   whose every scatter-to-scatter edge is specular, single scattering among them, cannot be
-///   sampled then.
+/// - point and directional lights behind a refracting interface (the default, Manifold): from each
+///   scattering vertex, next-event estimation straight (through null interfaces) and through one
+///   refraction (manifold_next_event.hpp), every scattering order; light that also reflected on its
+///   way in comes by light subpaths (light_subpaths.hpp) joined to each camera segment at a point
+///   drawn by equiangular sampling (Kulla & Fajardo 2012), whose pdf cancels the 1/d^2 of the join.
+///   Of those, paths whose every scatter-to-scatter edge is specular cannot be sampled.
+/// - the same with DeltaLightStrategy::Joins: light subpaths for all of it (no single scattering).
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -30,6 +31,7 @@
 #include "../scene/camera.hpp"
 #include "../util/parallel.hpp"
 #include "light_subpaths.hpp"
+#include "manifold_next_event.hpp"
 
 namespace lucent::reference {
 
@@ -61,11 +63,23 @@ class VolumePathTracer {
         mJoined.push_back(std::move(e));
         continue;
       }
-      (matched ? mNextEvent : mJoined).push_back(std::move(e));
+      if (matched) {
+        mNextEvent.push_back(std::move(e));
+      } else if (settings.deltaLights == DeltaLightStrategy::Manifold) {
+        e.cameraReachesThroughOneRefraction = true;
+        mNextEvent.push_back(e);
+        mJoined.push_back(std::move(e));
+      } else {
+        mJoined.push_back(std::move(e));
+      }
     }
+    if (!matched && !mNextEvent.empty())
+      mManifold.emplace(scene, caster, std::max(0, settings.manifoldGap));
     mGuideRadius = settings.guideRadius > 0 ? settings.guideRadius : autoGuideRadius();
   }
 
+  /// True when delta lights reach scattering vertices through a refraction by a manifold search.
+  bool manifoldDeltaLights() const { return mManifold.has_value(); }
   /// True when delta lights are reached by light subpaths (some interface refracts).
   bool joinsDeltaLights() const {
     for (const auto& e : mJoined)
@@ -176,7 +190,7 @@ class VolumePathTracer {
       for (int i = 0; i < mSettings.lightSubpaths; ++i)
         traceLightSubpath(mScene, mCaster,
                           sampleEmission(e, mCentre, mRadius, entry, mGuideRadius, rng), hero,
-                          mSettings, rng, targets, st);
+                          mSettings, rng, targets, st, e.cameraReachesThroughOneRefraction);
     for (std::size_t i = first; i < targets.size(); ++i)
       targets[i].weight.scale(glm::dvec3(1.0 / mSettings.lightSubpaths));
   }
@@ -236,6 +250,35 @@ class VolumePathTracer {
           segmentTransmittance(x, medium, toLight, distance, std::nullopt, rng, st);
       // Light travels along -toLight, then towards the camera along -dirIn.
       sum += w.value() * irradiance * tr * optics::phaseHG(glm::dot(toLight, dirIn), g);
+      if (mManifold) sum += w.value() * throughOneRefraction(x, dirIn, medium, e, rng, st);
+    }
+    return sum;
+  }
+
+  /// The light scattered at x towards -dirIn that reached x through one refraction, summed over
+  /// the refraction points the manifold search finds, each checked for visibility on both sides.
+  glm::dvec3 throughOneRefraction(const glm::dvec3& x, const glm::dvec3& dirIn,
+                                  std::uint32_t medium, const LightEmitter& e, util::Rng& rng,
+                                  PathTracerStats& st) const {
+    thread_local std::vector<RefractedConnection> found;
+    found.clear();
+    mManifold->search(x, e, mSettings.rayEpsilon, found, st.manifold);
+    glm::dvec3 sum(0);
+    const double g = mScene.media[medium].g;
+    for (const RefractedConnection& c : found) {
+      // Look for occluders short of the facet (the float hit distance of its own plane is not
+      // exact), and attenuate over the rest up to it in the facet's inner medium.
+      const double inside = std::max(0.0, c.insideLength * (1 - 1e-5) - 4 * mSettings.rayEpsilon);
+      glm::dvec3 trIn = segmentTransmittance(x, medium, c.towardsPoint, inside, c.inner, rng, st);
+      if (maxComponent(trIn) <= 0) continue;
+      if (const Medium& m = mScene.media[c.inner]; !m.vacuum())
+        trIn *= transmittance(m, x + inside * c.towardsPoint, c.towardsPoint,
+                              c.insideLength - inside, rng, st.medium);
+      const glm::dvec3 trOut =
+          segmentTransmittance(c.point + mSettings.rayEpsilon * c.normalOut, c.outer,
+                               c.towardsLight, c.outsideLength, std::nullopt, rng, st);
+      sum += e.power * c.irradiancePerPower * trIn * trOut *
+             optics::phaseHG(glm::dot(c.towardsPoint, dirIn), g);
     }
     return sum;
   }
@@ -283,6 +326,7 @@ class VolumePathTracer {
   double mRadius = 1, mGuideRadius = 1;
   std::vector<const scene::EnvironmentLight*> mEscape;
   std::vector<LightEmitter> mNextEvent, mJoined;
+  std::optional<ManifoldNextEvent> mManifold;
 };
 
 struct PathTracedImage {
