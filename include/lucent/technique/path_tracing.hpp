@@ -46,6 +46,10 @@ inline reference::PathTracerSettings pathTracerSettings(const SceneDescription& 
   s.environment = knobs.pick<reference::EnvironmentStrategy>(
       "env", {{"escape", reference::EnvironmentStrategy::Escape},
               {"connect", reference::EnvironmentStrategy::Connect}});
+  s.deltaLights = knobs.pick<reference::DeltaLightStrategy>(
+      "delta-lights", {{"manifold", reference::DeltaLightStrategy::Manifold},
+                       {"joins", reference::DeltaLightStrategy::Joins}});
+  s.manifoldGap = int(knobs.integer("manifold-gap"));
   s.lightSubpaths = int(knobs.integer("light-paths"));
   s.connectableOnly = knobs.pick<bool>("paths", {{"all", false}, {"connectable", true}});
   s.guideRadius = knobs.real("guide-radius");
@@ -84,6 +88,20 @@ inline void pathTracerWarnings(const reference::PathTracerStats& st, Statistics&
   warn(st.nonFiniteSamples, "non-finite estimates were dropped (please report this)");
 }
 
+/// What the manifold searches found, and a warning when some may have missed a refraction point.
+inline void manifoldFigures(const reference::ManifoldSearchStats& m, Statistics& stats) {
+  stats.figures["manifold_searches"] = double(m.searches);
+  stats.figures["manifold_solutions"] = double(m.solutions);
+  stats.figures["manifold_no_solution"] = double(m.noSolution);
+  stats.figures["manifold_multiple"] = double(m.multiple);
+  stats.figures["manifold_capped"] = double(m.capped);
+  if (m.capped)
+    stats.warnings.push_back("pathtrace: " + std::to_string(m.capped) + " of " +
+                             std::to_string(m.searches) +
+                             " manifold searches stopped at their cap of facets; refraction points "
+                             "beyond were left out");
+}
+
 class PathTracing final : public Prepared {
  public:
   explicit PathTracing(const KnobValues& knobs) : Prepared(knobs) {}
@@ -101,12 +119,18 @@ class PathTracing final : public Prepared {
                     media.addMedium(pathTracerMedium(inclusion.medium, g, matched)), objectId);
     const auto caster = scene.makeRayCaster(media.mesh);
     const reference::VolumePathTracer tracer(media, *caster, scene.lights, s);
-    if (tracer.joinsDeltaLights())
+    if (tracer.manifoldDeltaLights())
+      stats.warnings.push_back(
+          "pathtrace: point/directional light behind a refracting boundary is reached from every "
+          "scatter through one refraction by a manifold search (delta-lights=manifold), and by "
+          "light subpaths joined to camera segments where it also reflected inside on its way in; "
+          "single scattering of that reflected light is left out");
+    else if (tracer.joinsDeltaLights())
       stats.warnings.push_back(
           "pathtrace: point/directional light behind a refracting boundary is reached by light "
-          "subpaths joined to camera segments; paths whose every scatter-to-scatter segment is "
-          "specular (single scattering among them) cannot be sampled and are left out "
-          "(boundary=matched or an environment light include them)");
+          "subpaths joined to camera segments (delta-lights=joins); paths whose every "
+          "scatter-to-scatter segment is specular (single scattering among them) cannot be sampled "
+          "and are left out (delta-lights=manifold includes them)");
     const reference::PathTracedImage img = stats.timeFrame("path_tracing", [&] {
       return reference::renderPathTraced(tracer, *caster, *request.camera, s, scene.parallelFor,
                                          scene.stage("path tracing"));
@@ -132,6 +156,7 @@ class PathTracing final : public Prepared {
     stats.figures["truncated_paths"] = double(st.truncatedPaths);
     stats.figures["roulette_terminations"] = double(st.rouletteTerminations);
     stats.figures["leaked_paths"] = double(st.leakedPaths);
+    if (tracer.manifoldDeltaLights()) manifoldFigures(st.manifold, stats);
     pathTracerWarnings(st, stats);
     return out;
   }
@@ -170,6 +195,13 @@ inline Technique pathtraceTechnique() {
       KnobSpec::choice("paths", {"all", "connectable"},
                        "escaping paths counted: all, or connectable (those a delta light could "
                        "reach through a refracting boundary)"),
+      KnobSpec::choice("delta-lights", {"manifold", "joins"},
+                       "point/directional light behind a refracting boundary: manifold (next-event "
+                       "through one refraction from every scatter, Hanika et al. 2015) or joins "
+                       "(light subpaths only: noisy, no single scattering)"),
+      KnobSpec::integer("manifold-gap", reference::PathTracerSettings{}.manifoldGap, 0, 64,
+                        "facets without a refraction point the manifold search crosses looking for "
+                        "more (a curved shape focuses light through bands of facets)"),
       KnobSpec::integer(
           "light-paths", 1, 1, 1024,
           "light subpaths per delta light and camera sample (behind a refracting boundary)"),
@@ -193,9 +225,9 @@ inline Technique pathtraceTechnique() {
   t.quickKnobs = {{"spp", "4"}};
   t.model = kPhysicalModel;
   t.validRange =
-      "any size and medium: the error is Monte Carlo noise (reported as the standard error); a "
-      "point or directional light behind a refracting boundary is reached only by light subpaths, "
-      "which is noisy on high-albedo media";
+      "any size and medium: the error is Monte Carlo noise (reported as the standard error); "
+      "behind a refracting boundary a point or directional light is reached through one refraction "
+      "by a manifold search over the facets (counted: searches that may have missed a point)";
   t.prepare = [](const SceneDescription&, const KnobValues& knobs, Statistics&) {
     return std::make_unique<detail::PathTracing>(knobs);
   };
