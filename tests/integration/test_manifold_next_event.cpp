@@ -406,3 +406,58 @@ TEST_CASE(
       estimate(reference::VolumePathTracer(scene, caster, lights, single), 20000, rayOf, 6);
   for (int c = 0; c < 3; ++c) CHECK(ss.mean[c] > 10 * ss.stdError[c]);
 }
+
+TEST_CASE(
+    "Behind eta 1.3, manifold next-event estimation from directional lights spread over an "
+    "environment cap equals camera paths escaping to that cap, scattering order by order") {
+  // The environment-light estimator (paths that escape and happen to hit the cap) shares nothing
+  // with the manifold search. The cap's light is split into directional lights at the midpoints of
+  // cells of equal solid angle: the quadrature of a smooth response over 22.5 degrees. Unscattered
+  // light is left out: a camera ray refracted or reflected straight to the cap sees it, but never
+  // a delta light.
+  const double alpha = optics::kPi / 8, radiance = 4;
+  scene::EnvironmentLight cap;
+  cap.width = 8, cap.height = 8;  // the top row of a lat-long map: theta < 22.5 degrees
+  cap.radiance.assign(64, glm::vec3(0.0f));
+  for (int col = 0; col < 8; ++col) cap.radiance[std::size_t(col)] = glm::vec3(float(radiance));
+  const int rings = 2, perRing = 4;
+  const double cellSolidAngle = 2 * optics::kPi * (1 - std::cos(alpha)) / (rings * perRing);
+  std::vector<scene::DirectionalLight> cells;
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < perRing; ++j) {
+      const double cosTheta = 1 - (i + 0.5) / rings * (1 - std::cos(alpha));
+      const double sinTheta = std::sqrt(1 - cosTheta * cosTheta);
+      const double phi = 2 * optics::kPi * (j + 0.5 + 0.5 * i) / perRing;
+      const glm::dvec3 towards(sinTheta * std::sin(phi), cosTheta, -sinTheta * std::cos(phi));
+      cells.push_back({towards, glm::dvec3(radiance * cellSolidAngle)});
+    }
+  const std::vector<scene::Light> spread(cells.begin(), cells.end());
+  reference::MediumScene scene;
+  scene.addBody(scene::shapes::sphere(1.0, 4),
+                scene.addMedium(medium({0.3, 0.1, 0.02}, {2, 3, 5}, 1.3, 0.3)), 0);
+  const raycast::EmbreeRayCaster caster(scene.mesh);
+  auto rayOf = [&](std::size_t, util::Rng& rng) { return rayThroughSphere(1.0, rng); };
+  for (const auto orders :
+       {reference::ScatteringOrders::Single, reference::ScatteringOrders::Multiple}) {
+    reference::PathTracerSettings s;  // escape for the cap, manifold for delta lights
+    s.orders = orders;
+    const Estimate escaping =
+        estimate(reference::VolumePathTracer(scene, caster, {cap}, s), 600000, rayOf, 8);
+    const reference::VolumePathTracer manifold(scene, caster, spread, s);
+    REQUIRE(manifold.manifoldDeltaLights());
+    const Estimate searched = estimate(manifold, 20000, rayOf, 9);
+    for (int c = 0; c < 3; ++c) {
+      const double se = std::hypot(escaping.stdError[c], searched.stdError[c]);
+      const std::string order =
+          orders == reference::ScatteringOrders::Single ? "single" : "multiple";
+      INFO(order << ", channel " << c << ": escaping " << escaping.mean[c] << " +- "
+                 << escaping.stdError[c] << ", manifold " << searched.mean[c] << " +- "
+                 << searched.stdError[c]);
+      CHECK(std::abs(escaping.mean[c] - searched.mean[c]) <= 4 * se);
+      CHECK(se < 0.035 * searched.mean[c]);  // a test that could tell a 14 % error
+    }
+    checkClean(escaping.stats);
+    checkClean(searched.stats);
+    CHECK(searched.stats.manifold.capped == 0);
+  }
+}
