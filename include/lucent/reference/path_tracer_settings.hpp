@@ -71,6 +71,7 @@ struct PathTracerStats {
       0;  ///< a surface's declared media disagree with the path's (nesting errors)
   std::uint64_t nonFiniteSamples = 0;      ///< dropped NaN/inf estimates (must stay 0)
   std::uint64_t rouletteTerminations = 0;  ///< camera paths ended by Russian roulette
+  std::uint64_t clearFlights = 0;  ///< camera flights that surely ended short of every surface
   MediumSamplingStats medium;
   ManifoldSearchStats manifold;
 
@@ -82,7 +83,7 @@ struct PathTracerStats {
         mediumMismatches += o.mediumMismatches;
     nonFiniteSamples += o.nonFiniteSamples,
         medium.majorantViolations += o.medium.majorantViolations;
-    rouletteTerminations += o.rouletteTerminations;
+    rouletteTerminations += o.rouletteTerminations, clearFlights += o.clearFlights;
     manifold.add(o.manifold);
   }
 };

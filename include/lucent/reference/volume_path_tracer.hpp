@@ -29,6 +29,7 @@
 
 #include "../image/image.hpp"
 #include "../scene/camera.hpp"
+#include "../scene/surface_clearance_grid.hpp"
 #include "../util/parallel.hpp"
 #include "light_subpaths.hpp"
 #include "manifold_next_event.hpp"
@@ -39,7 +40,11 @@ class VolumePathTracer {
  public:
   VolumePathTracer(const MediumScene& scene, const scene::RayCaster& caster,
                    const std::vector<scene::Light>& lights, const PathTracerSettings& settings)
-      : mScene(scene), mCaster(caster), mSettings(settings), mLights(lights) {
+      : mScene(scene),
+        mCaster(caster),
+        mSettings(settings),
+        mLights(lights),
+        mClearance(scene.mesh) {
     const scene::Bounds b = scene.mesh.bounds();
     mCentre = b.center();
     mRadius = 0.5 * b.diagonal() * 1.01 + 1e-9;
@@ -112,17 +117,29 @@ class VolumePathTracer {
         ++st.truncatedPaths;
         break;
       }
-      const auto hit = mCaster.intersect(pos, dir, 0, kInf);
       const Medium& m = mScene.media[medium];
+      std::optional<scene::RayHit> hit;
       if (!m.vacuum()) {
-        if (!hit) {
-          ++st.leakedPaths;
-          break;
+        // A homogeneous flight is drawn first: one that ends short of every surface (the clearance
+        // grid's bound) needs no ray cast. Joins need the whole segment, so they always cast.
+        const bool drawFirst = m.homogeneous() && targets.empty();
+        double t = drawFirst ? drawHomogeneousFlight(m, hero, rng) : 0;
+        const bool clear = drawFirst && t < mClearance.lowerBound(pos) - 4 * s.rayEpsilon;
+        if (!clear) {
+          hit = mCaster.intersect(pos, dir, 0, kInf);
+          if (!hit) {
+            ++st.leakedPaths;
+            break;
+          }
+        } else {
+          ++st.clearFlights;
         }
         if (!targets.empty())
           radiance += joinAlongSegment(pos, dir, hit->t, medium, w, scatters + 1, targets, rng, st);
-        double t = 0;
-        if (sampleFlight(m, pos, dir, hit->t, hero, rng, w, t, st.medium)) {
+        const bool collided = drawFirst
+                                  ? finishHomogeneousFlight(m, t, clear ? kInf : hit->t, w)
+                                  : sampleFlight(m, pos, dir, hit->t, hero, rng, w, t, st.medium);
+        if (collided) {
           pos += t * dir;
           ++scatters, ++st.scatterEvents;
           if (scatters > 1 && !specularSinceScatter) straightEdge = true;
@@ -136,7 +153,7 @@ class VolumePathTracer {
           dir = scatterHG(dir, m.g, rng);
           continue;
         }
-      } else if (!hit) {
+      } else if (!(hit = mCaster.intersect(pos, dir, 0, kInf))) {
         if (orderCounts(s.orders, scatters) && (!s.connectableOnly || straightEdge))
           for (const auto* env : mEscape) radiance += w.value() * env->lookup(dir);
         break;
@@ -327,6 +344,7 @@ class VolumePathTracer {
   std::vector<const scene::EnvironmentLight*> mEscape;
   std::vector<LightEmitter> mNextEvent, mJoined;
   std::optional<ManifoldNextEvent> mManifold;
+  scene::SurfaceClearanceGrid mClearance;  ///< lets flights that end deep inside skip a ray cast
 };
 
 struct PathTracedImage {

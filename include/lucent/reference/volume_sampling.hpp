@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -84,21 +85,35 @@ inline double majorant(const Medium& m) {
 /// `t` for a real (scattering) collision, false when the flight reaches the boundary; `w` takes the
 /// factors of that event for every channel (its pdf for each would-be hero, its contribution per
 /// channel).
+/// In a homogeneous medium, the distance to the next collision drawn for the hero channel
+/// (infinite where the hero's extinction is 0). Drawn before the boundary is known, so a flight
+/// that surely ends before any surface needs no ray cast (surface_clearance_grid.hpp).
+inline double drawHomogeneousFlight(const Medium& m, int hero, util::Rng& rng) {
+  const double sh = m.sigmaT()[hero];
+  return sh > 0 ? -std::log(1 - rng.uniform()) / sh : std::numeric_limits<double>::infinity();
+}
+
+/// The rest of sampleFlight in a homogeneous medium, for a distance t drawn by
+/// drawHomogeneousFlight: true (a collision at t) when t < tBoundary.
+inline bool finishHomogeneousFlight(const Medium& m, double t, double tBoundary,
+                                    HeroChannelWeight& w) {
+  const glm::dvec3 sigmaT = m.sigmaT();
+  if (t >= tBoundary) {
+    const glm::dvec3 tr = glm::exp(-sigmaT * tBoundary);
+    w.scale(tr, tr);
+    return false;
+  }
+  const glm::dvec3 tr = glm::exp(-sigmaT * t);
+  w.scale(m.sigmaS * tr, sigmaT * tr);
+  return true;
+}
+
 inline bool sampleFlight(const Medium& m, const glm::dvec3& x, const glm::dvec3& d,
                          double tBoundary, int hero, util::Rng& rng, HeroChannelWeight& w,
                          double& t, MediumSamplingStats& stats) {
-  const glm::dvec3 sigmaT = m.sigmaT();
   if (m.homogeneous()) {
-    const double sh = sigmaT[hero];
-    t = sh > 0 ? -std::log(1 - rng.uniform()) / sh : tBoundary;
-    if (t >= tBoundary) {
-      const glm::dvec3 tr = glm::exp(-sigmaT * tBoundary);
-      w.scale(tr, tr);
-      return false;
-    }
-    const glm::dvec3 tr = glm::exp(-sigmaT * t);
-    w.scale(m.sigmaS * tr, sigmaT * tr);
-    return true;
+    t = drawHomogeneousFlight(m, hero, rng);
+    return finishHomogeneousFlight(m, t, tBoundary, w);
   }
   const double sigmaBar = detail::majorant(m);
   if (!(sigmaBar > 0)) return false;

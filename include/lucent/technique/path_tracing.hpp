@@ -155,6 +155,7 @@ class PathTracing final : public Prepared {
     stats.figures["guide_radius_mm"] = tracer.guideRadius();
     stats.figures["truncated_paths"] = double(st.truncatedPaths);
     stats.figures["roulette_terminations"] = double(st.rouletteTerminations);
+    stats.figures["clear_flights"] = double(st.clearFlights);
     stats.figures["leaked_paths"] = double(st.leakedPaths);
     if (tracer.manifoldDeltaLights()) manifoldFigures(st.manifold, stats);
     pathTracerWarnings(st, stats);
