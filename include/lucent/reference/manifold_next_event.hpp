@@ -244,9 +244,15 @@ class ManifoldNextEvent {
   /// Appends to `out` the refraction points joining x to `light` (visibility not yet checked).
   void search(const glm::dvec3& x, const LightEmitter& light, double epsilon,
               std::vector<RefractedConnection>& out, ManifoldSearchStats& st) const {
+    searchFrom(firstRefractingFacet(x, light, epsilon), x, light, out, st);
+  }
+
+  /// search, with the first facet between different indices on the straight line from x to the
+  /// light already known (nullopt: there is none, so no refraction point either).
+  void searchFrom(std::optional<std::uint32_t> seed, const glm::dvec3& x, const LightEmitter& light,
+                  std::vector<RefractedConnection>& out, ManifoldSearchStats& st) const {
     ++st.searches;
     const std::size_t first = out.size();
-    const std::optional<std::uint32_t> seed = firstRefractingFacet(x, light, epsilon);
     if (seed) collectAround(walk(*seed, x, light), x, light, out, st);
     const std::size_t found = out.size() - first;
     st.solutions += found;

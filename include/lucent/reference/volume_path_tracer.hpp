@@ -229,19 +229,32 @@ class VolumePathTracer {
 
   /// Transmittance from x along `dir` over `length` through null interfaces only (0 at a specular
   /// one), ending in `endMedium` when given.
+  /// Where a straight segment ended: at its end, at a refracting facet, or neither known.
+  struct SegmentEnd {
+    bool reachedEnd = false;
+    std::optional<std::uint32_t> refractingFacet;
+  };
+
   glm::dvec3 segmentTransmittance(glm::dvec3 x, std::uint32_t medium, const glm::dvec3& dir,
                                   double length, std::optional<std::uint32_t> endMedium,
-                                  util::Rng& rng, PathTracerStats& st) const {
+                                  util::Rng& rng, PathTracerStats& st,
+                                  SegmentEnd* end = nullptr) const {
     glm::dvec3 tr(1);
     for (int crossings = 0; crossings < 64; ++crossings) {
       const auto hit = mCaster.intersect(x, dir, 0, length);
       const double seg = hit ? hit->t : length;
       if (!mScene.media[medium].vacuum())
         tr *= transmittance(mScene.media[medium], x, dir, seg, rng, st.medium);
-      if (!hit) return !endMedium || *endMedium == medium ? tr : glm::dvec3(0);
+      if (!hit) {
+        if (end) end->reachedEnd = true;
+        return !endMedium || *endMedium == medium ? tr : glm::dvec3(0);
+      }
       if (maxComponent(tr) <= 0) return tr;
       const InterfaceSides sides = interfaceSides(mScene, hit->triangle, dir);
-      if (mScene.media[sides.from].eta != mScene.media[sides.to].eta) return glm::dvec3(0);
+      if (mScene.media[sides.from].eta != mScene.media[sides.to].eta) {
+        if (end) end->refractingFacet = hit->triangle;
+        return glm::dvec3(0);
+      }
       x += hit->t * dir - mSettings.rayEpsilon * sides.normalTowardsPath;
       length -= hit->t;
       medium = sides.to;
@@ -263,23 +276,30 @@ class VolumePathTracer {
         toLight = v / distance;
         irradiance = e.power / (distance * distance);
       }
+      SegmentEnd end;
       const glm::dvec3 tr =
-          segmentTransmittance(x, medium, toLight, distance, std::nullopt, rng, st);
+          segmentTransmittance(x, medium, toLight, distance, std::nullopt, rng, st, &end);
       // Light travels along -toLight, then towards the camera along -dirIn.
       sum += w.value() * irradiance * tr * optics::phaseHG(glm::dot(toLight, dirIn), g);
-      if (mManifold) sum += w.value() * throughOneRefraction(x, dirIn, medium, e, rng, st);
+      if (mManifold) sum += w.value() * throughOneRefraction(x, dirIn, medium, e, end, rng, st);
     }
     return sum;
   }
 
   /// The light scattered at x towards -dirIn that reached x through one refraction, summed over
   /// the refraction points the manifold search finds, each checked for visibility on both sides.
+  /// `straight` is where the straight segment to the light ended: the search starts from its
+  /// refracting facet instead of casting the same ray again.
   glm::dvec3 throughOneRefraction(const glm::dvec3& x, const glm::dvec3& dirIn,
-                                  std::uint32_t medium, const LightEmitter& e, util::Rng& rng,
+                                  std::uint32_t medium, const LightEmitter& e,
+                                  const SegmentEnd& straight, util::Rng& rng,
                                   PathTracerStats& st) const {
     thread_local std::vector<RefractedConnection> found;
     found.clear();
-    mManifold->search(x, e, mSettings.rayEpsilon, found, st.manifold);
+    if (straight.reachedEnd || straight.refractingFacet)
+      mManifold->searchFrom(straight.refractingFacet, x, e, found, st.manifold);
+    else
+      mManifold->search(x, e, mSettings.rayEpsilon, found, st.manifold);
     glm::dvec3 sum(0);
     const double g = mScene.media[medium].g;
     for (const RefractedConnection& c : found) {
