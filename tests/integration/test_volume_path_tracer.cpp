@@ -127,6 +127,50 @@ TEST_CASE(
   }
 }
 
+TEST_CASE(
+    "A chromatic half-space, each channel its own Chandrasekhar solution, with the hero channel "
+    "chosen by reflectance and by uniform choice") {
+  // Per channel the half-space's reflection depends on its albedo alone, not on sigma_t, so the
+  // channels' extinctions (1, 2, 4) differ while each has an exact answer: the one-sample MIS over
+  // channels must weight distances drawn with another channel's sigma_t right, for a hero chosen
+  // with P far from uniform as for P = 1/3.
+  const glm::dvec3 albedo(0.95, 0.6, 0.3), sigmaT(1, 2, 4);
+  reference::MediumScene scene;
+  scene.addBody(scene::shapes::box(glm::dvec3(200, 200, 100), 100.0),
+                scene.addMedium(medium(sigmaT * (glm::dvec3(1) - albedo), sigmaT * albedo, 1.0)),
+                0);
+  for (auto& p : scene.mesh.positions) p.z -= 100;  // top face at z = 0
+  const raycast::EmbreeRayCaster caster(scene.mesh);
+  const std::vector<scene::Light> lights{
+      scene::DirectionalLight{glm::dvec3(0, 0, 1), glm::dvec3(1.0)}};
+  const double mu = 0.6;
+  const glm::dvec3 toEye(std::sqrt(1 - mu * mu), 0, mu);
+  auto rayOf = [&](std::size_t, util::Rng& rng) {
+    const glm::dvec3 target(4 * rng.uniform() - 2, 4 * rng.uniform() - 2, 0);
+    return scene::Ray{target + 50.0 * toEye, -toEye};
+  };
+  glm::dvec3 exact;
+  for (int c = 0; c < 3; ++c)
+    exact[c] = albedo[c] / (4 * optics::kPi) / (1 + mu) * test::chandrasekharH(mu, albedo[c]) *
+               test::chandrasekharH(1.0, albedo[c]);
+  for (auto choice : {reference::HeroChoice::Reflectance, reference::HeroChoice::Uniform}) {
+    reference::PathTracerSettings s;
+    s.heroChoice = choice;
+    const reference::VolumePathTracer tracer(scene, caster, lights, s);
+    if (choice == reference::HeroChoice::Reflectance) {
+      CHECK(tracer.heroChoice().x > 0.5);  // red reflects most: chosen most
+      CHECK(tracer.heroChoice().z > 0.2 / 3);
+    } else {
+      CHECK(tracer.heroChoice() == glm::dvec3(1.0 / 3));
+    }
+    const Estimate e = estimate(tracer, 40000, rayOf, 7);
+    checkWithin(e, exact, 4,
+                choice == reference::HeroChoice::Reflectance ? "reflectance" : "uniform");
+    for (int c = 0; c < 3; ++c) CHECK(e.stdError[c] < 0.03 * exact[c]);
+    checkClean(e.stats);
+  }
+}
+
 TEST_CASE("Behind a Fresnel boundary, light subpaths joined to the camera equal escaping paths") {
   // Two independent estimators of the same paths (those with a straight scatter-to-scatter
   // segment): the camera walk escaping to a bright environment cap, and light subpaths sampled from

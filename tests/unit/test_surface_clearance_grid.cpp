@@ -81,7 +81,7 @@ TEST_CASE("The clearance grid's bound never exceeds the distance to the surface"
   }
 }
 
-TEST_CASE("Deep inside a sphere the clearance bound is most of the distance; outside it is 0") {
+TEST_CASE("Deep inside a sphere the clearance bound is most of the distance, and outside it is 0") {
   const scene::TriangleMesh mesh = scene::shapes::sphere(1.0, 4);
   const scene::SurfaceClearanceGrid grid(mesh, 128);
   const double h = grid.cellSize();

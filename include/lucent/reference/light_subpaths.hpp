@@ -135,13 +135,15 @@ inline EmissionSample sampleEmission(const LightEmitter& light, const glm::dvec3
 /// comment). With `skipOneRefraction`, a subpath whose first scatter the light reached straight or
 /// through one refraction is dropped whole: the camera's next-event estimation counts those paths.
 inline void traceLightSubpath(const MediumScene& scene, const scene::RayCaster& caster,
-                              const EmissionSample& emission, int hero, const PathTracerSettings& s,
+                              const EmissionSample& emission, int hero,
+                              const glm::dvec3& heroChoice, const PathTracerSettings& s,
                               util::Rng& rng, std::vector<LightVertex>& out, PathTracerStats& stats,
                               bool skipOneRefraction = false) {
   ++stats.lightSubpaths;
   if (emission.weight == glm::dvec3(0)) return;
   HeroChannelWeight w;
   w.f = emission.weight;
+  w.choice = heroChoice;
   glm::dvec3 pos = emission.origin, dir = emission.direction;
   std::uint32_t medium = 0;
   int order = 0, kept = 0, refractionsIn = 0, reflectionsIn = 0;

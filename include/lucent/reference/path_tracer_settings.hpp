@@ -23,6 +23,11 @@ enum class EnvironmentStrategy { Escape, Connect };
 /// other).
 enum class DeltaLightStrategy { Manifold, Joins };
 
+/// How a path picks the channel it draws its distances with (hero_channel_weight.hpp): uniformly,
+/// or in proportion to the object medium's total diffuse reflectance per channel (the share of
+/// the image each channel is expected to hold), mixed with a fifth of uniform so none is starved.
+enum class HeroChoice { Reflectance, Uniform };
+
 struct PathTracerSettings {
   int samplesPerPixel = 16;
   std::uint64_t seed = 1;
@@ -37,6 +42,7 @@ struct PathTracerSettings {
   /// segment: exactly the paths a delta light can reach through a refracting boundary (for checks).
   bool connectableOnly = false;
   DeltaLightStrategy deltaLights = DeltaLightStrategy::Manifold;
+  HeroChoice heroChoice = HeroChoice::Reflectance;
   /// Edge steps without a refraction point the manifold search floods across from the facets with
   /// one: a curved surface focuses light through bands of facets (manifold_next_event.hpp).
   int manifoldGap = 2;

@@ -28,6 +28,7 @@
 #include <glm/vec4.hpp>
 
 #include "../image/image.hpp"
+#include "../optics/dipole.hpp"
 #include "../scene/camera.hpp"
 #include "../scene/surface_clearance_grid.hpp"
 #include "../util/parallel.hpp"
@@ -81,7 +82,11 @@ class VolumePathTracer {
     if (!matched && !mNextEvent.empty())
       mManifold.emplace(scene, caster, std::max(0, settings.manifoldGap));
     mGuideRadius = settings.guideRadius > 0 ? settings.guideRadius : autoGuideRadius();
+    if (settings.heroChoice == HeroChoice::Reflectance) mHeroChoice = reflectanceHeroChoice();
   }
+
+  /// P_c, the probability of each channel being a path's hero.
+  const glm::dvec3& heroChoice() const { return mHeroChoice; }
 
   /// True when delta lights reach scattering vertices through a refraction by a manifold search.
   bool manifoldDeltaLights() const { return mManifold.has_value(); }
@@ -100,8 +105,9 @@ class VolumePathTracer {
     constexpr double kInf = std::numeric_limits<double>::infinity();
     const PathTracerSettings& s = mSettings;
     ++st.cameraSamples;
-    const int hero = std::min(2, int(3 * rng.uniform()));
     HeroChannelWeight w;
+    w.choice = mHeroChoice;
+    const int hero = w.pickHero(rng.uniform());
     glm::dvec3 radiance(0), pos = origin, dir = direction;
     // A distant camera's rays start near the scene: Embree's float hit distances scale with the
     // origin's.
@@ -160,6 +166,12 @@ class VolumePathTracer {
       }
       const glm::dvec3 point = surfacePoint(mScene, *hit);
       const InterfaceSides sides = interfaceSides(mScene, hit->triangle, dir);
+      if (sides.from != medium && hit->t < 4 * s.rayEpsilon) {
+        // The path stands within rounding of a facet, on its far side (a scatter a few nanometres
+        // from the boundary): step past it rather than cross from the wrong medium.
+        pos += (hit->t + s.rayEpsilon) * dir;
+        continue;
+      }
       if (sides.from != medium) ++st.mediumMismatches;
       const InterfaceCrossing c = crossInterface(mScene, point, dir, sides, s.rayEpsilon, rng, true,
                                                  firstSurface && s.subsurfaceOnly);
@@ -200,14 +212,31 @@ class VolumePathTracer {
     return mRadius;
   }
 
+  /// P_c = 0.8 Rd_c / sum Rd + 0.2 / 3 for the first medium's total diffuse reflectance Rd
+  /// (Jensen et al. 2001, Eq. 14): the channels are sampled about as often as they show in the
+  /// image, and none less than 1/15 of the time. Uniform where Rd says nothing (no medium, or a
+  /// pure absorber).
+  glm::dvec3 reflectanceHeroChoice() const {
+    for (std::size_t i = 1; i < mScene.media.size(); ++i) {
+      const Medium& m = mScene.media[i];
+      if (m.vacuum()) continue;
+      const glm::dvec3 rd =
+          optics::Dipole<double>::make(m.sigmaA, (1 - m.g) * m.sigmaS, m.eta).total();
+      const double sum = rd.x + rd.y + rd.z;
+      if (!(sum > 0) || !std::isfinite(sum)) break;
+      return 0.8 * rd / sum + glm::dvec3(0.2 / 3);
+    }
+    return glm::dvec3(1.0 / 3);
+  }
+
   void traceLightSubpaths(const glm::dvec3& entry, int hero, util::Rng& rng,
                           std::vector<LightVertex>& targets, PathTracerStats& st) const {
     const std::size_t first = targets.size();
     for (const LightEmitter& e : mJoined)
       for (int i = 0; i < mSettings.lightSubpaths; ++i)
-        traceLightSubpath(mScene, mCaster,
-                          sampleEmission(e, mCentre, mRadius, entry, mGuideRadius, rng), hero,
-                          mSettings, rng, targets, st, e.cameraReachesThroughOneRefraction);
+        traceLightSubpath(
+            mScene, mCaster, sampleEmission(e, mCentre, mRadius, entry, mGuideRadius, rng), hero,
+            mHeroChoice, mSettings, rng, targets, st, e.cameraReachesThroughOneRefraction);
     for (std::size_t i = first; i < targets.size(); ++i)
       targets[i].weight.scale(glm::dvec3(1.0 / mSettings.lightSubpaths));
   }
@@ -361,6 +390,7 @@ class VolumePathTracer {
   const std::vector<scene::Light> mLights;
   glm::dvec3 mCentre{0};
   double mRadius = 1, mGuideRadius = 1;
+  glm::dvec3 mHeroChoice{1.0 / 3};
   std::vector<const scene::EnvironmentLight*> mEscape;
   std::vector<LightEmitter> mNextEvent, mJoined;
   std::optional<ManifoldNextEvent> mManifold;

@@ -50,6 +50,9 @@ inline reference::PathTracerSettings pathTracerSettings(const SceneDescription& 
       "delta-lights", {{"manifold", reference::DeltaLightStrategy::Manifold},
                        {"joins", reference::DeltaLightStrategy::Joins}});
   s.manifoldGap = int(knobs.integer("manifold-gap"));
+  s.heroChoice = knobs.pick<reference::HeroChoice>(
+      "hero", {{"reflectance", reference::HeroChoice::Reflectance},
+               {"uniform", reference::HeroChoice::Uniform}});
   s.lightSubpaths = int(knobs.integer("light-paths"));
   s.connectableOnly = knobs.pick<bool>("paths", {{"all", false}, {"connectable", true}});
   s.guideRadius = knobs.real("guide-radius");
@@ -203,6 +206,9 @@ inline Technique pathtraceTechnique() {
       KnobSpec::integer("manifold-gap", reference::PathTracerSettings{}.manifoldGap, 0, 64,
                         "facets without a refraction point the manifold search crosses looking for "
                         "more (a curved shape focuses light through bands of facets)"),
+      KnobSpec::choice("hero", {"reflectance", "uniform"},
+                       "the channel each path draws its distances with: in proportion to the "
+                       "medium's total diffuse reflectance per channel, or uniformly"),
       KnobSpec::integer(
           "light-paths", 1, 1, 1024,
           "light subpaths per delta light and camera sample (behind a refracting boundary)"),
