@@ -85,12 +85,13 @@ struct FacetPlane {
 
 namespace detail {
 
-/// u in [0, D] where n_in u / sqrt(a^2 + u^2) = n_out (D - u) / sqrt(b^2 + (D - u)^2): Snell's law
-/// in the plane of incidence, the stationary point of the optical path. The left side minus the
-/// right rises monotonically from <= 0 at u = 0 to >= 0 at u = D; Newton from the paraxial root
-/// (sin = tan), kept inside a shrinking bracket.
-inline double snellRoot(double a, double b, double D, double nIn, double nOut) {
-  double lo = 0, hi = D, u = D * nOut * a / (nOut * a + nIn * b);
+/// u in [lo, hi] where n_in u / sqrt(a^2 + u^2) = n_out (D - u) / sqrt(b^2 + (D - u)^2): Snell's
+/// law in the plane of incidence, the stationary point of the optical path. The left side minus the
+/// right rises monotonically from <= 0 at lo to >= 0 at hi (snellBracket); Newton from the paraxial
+/// root (sin = tan), kept inside a shrinking bracket.
+inline double snellRoot(double a, double b, double D, double nIn, double nOut, double lo,
+                        double hi) {
+  double u = std::clamp(D * nOut * a / (nOut * a + nIn * b), lo, hi);
   for (int i = 0; i < 100; ++i) {
     // Lengths stay far from overflow (mm; the scene is bounded), so no hypot.
     const double ra = std::sqrt(a * a + u * u), rb = std::sqrt(b * b + (D - u) * (D - u));
@@ -106,6 +107,15 @@ inline double snellRoot(double a, double b, double D, double nIn, double nOut) {
   return u;
 }
 
+/// Where along [0, D] Snell's root lies: at u = D a / (a + b) the straight line crosses with equal
+/// angles, so the left side of snellRoot's equation there is (n_in - n_out) sin: positive when x
+/// is in the denser medium (the root lies nearer x's foot), negative otherwise.
+inline std::pair<double, double> snellBracket(double a, double b, double D, double nIn,
+                                              double nOut) {
+  const double straight = D * a / (a + b);
+  return nIn > nOut ? std::pair{0.0, straight} : std::pair{straight, D};
+}
+
 /// Where light from a point light refracts through the plane towards x (Fermat), setting the
 /// outside half of `c`; false when the light is on x's side.
 inline bool pointLightRefraction(const FacetPlane& plane, const glm::dvec3& x, double depth,
@@ -115,15 +125,17 @@ inline bool pointLightRefraction(const FacetPlane& plane, const glm::dvec3& x, d
   if (!(height > 0)) return false;
   const glm::dvec3 xFoot = x + depth * c.normalOut,
                    lightFoot = lightPosition - height * c.normalOut;
+  const double D = glm::length(lightFoot - xFoot);
+  const auto [lo, hi] = detail::snellBracket(depth, height, D, nIn, nOut);
+  const glm::dvec3 along = D > 0 ? (lightFoot - xFoot) / D : glm::dvec3(0);
   if (onFacetOnly) {
-    // The root lies on the segment between the feet: outside one edge at both ends, it misses.
-    const glm::dvec3 a = plane.barycentric(xFoot), b = plane.barycentric(lightFoot);
+    // The root lies between the bracket's ends: outside one edge at both, it misses the facet.
+    const glm::dvec3 a = plane.barycentric(xFoot + lo * along),
+                     b = plane.barycentric(xFoot + hi * along);
     if ((a.x < 0 && b.x < 0) || (a.y < 0 && b.y < 0) || (a.z < 0 && b.z < 0)) return false;
   }
-  const double D = glm::length(lightFoot - xFoot);
-
-  const double u = D > 0 ? snellRoot(depth, height, D, nIn, nOut) : 0;
-  c.point = D > 0 ? xFoot + (u / D) * (lightFoot - xFoot) : xFoot;
+  const double u = D > 0 ? snellRoot(depth, height, D, nIn, nOut, lo, hi) : 0;
+  c.point = xFoot + u * along;
   c.outsideLength = glm::length(lightPosition - c.point);
   c.towardsLight = (lightPosition - c.point) / c.outsideLength;
   cosOut = height / c.outsideLength;
@@ -284,9 +296,18 @@ class ManifoldNextEvent {
   /// Steps from facet to facet towards the one holding its own solution; returns where it stopped.
   std::uint32_t walk(std::uint32_t t, const glm::dvec3& x, const LightEmitter& light) const {
     std::uint32_t previous = scene::FacetAdjacency::kNone;
+    bool jumped = false;
     for (int step = 0; step < mMaxSteps; ++step) {
       const auto c = refractionPoint(mScene, t, mPlanes[t], x, light);
       if (!c || c->onFacet()) return t;
+      if (!jumped) {  // once: land near the solution instead of stepping there edge by edge
+        jumped = true;
+        if (const auto landed = jumpTowards(*c, x); landed && *landed != t) {
+          previous = scene::FacetAdjacency::kNone;
+          t = *landed;
+          continue;
+        }
+      }
       const glm::dvec3& b = c->barycentric;
       const int k = b.x <= b.y && b.x <= b.z ? 0 : (b.y <= b.z ? 1 : 2);
       const std::uint32_t next = mAdjacency.across(t, k);
@@ -297,6 +318,18 @@ class ManifoldNextEvent {
       t = next;
     }
     return t;
+  }
+
+  /// The facet the ray from x towards the plane's solution meets first, if it separates the same
+  /// two media: on a curved surface its own solution lies a step or two away.
+  std::optional<std::uint32_t> jumpTowards(const RefractedConnection& c,
+                                           const glm::dvec3& x) const {
+    const auto hit = mCaster.intersect(x, c.towardsPoint, 0, 2 * c.insideLength);
+    if (!hit) return std::nullopt;
+    const std::uint32_t h = hit->triangle;
+    const bool sameMedia = (mScene.inside[h] == c.inner && mScene.outside[h] == c.outer) ||
+                           (mScene.inside[h] == c.outer && mScene.outside[h] == c.inner);
+    return sameMedia ? std::optional{h} : std::nullopt;
   }
 
   /// Floods out from `centre` over the facets within mGapSteps edge steps of the nearest facet
