@@ -1,10 +1,12 @@
 #pragma once
 // Shared by the path-tracer tests: the mean and standard error of path-traced estimates along
-// random rays, rays through a sphere, a uniform environment, a test medium, and the clean-run
-// checks.
+// random rays, rays through a sphere, a uniform environment, a test medium, the agreement of two
+// estimates, and the clean-run checks.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <functional>
+#include <string>
 
 #include <lucent/reference/volume_path_tracer.hpp>
 #include <lucent/util/basis.hpp>
@@ -67,6 +69,20 @@ inline reference::Medium medium(glm::dvec3 sigmaA, glm::dvec3 sigmaS, double eta
   m.name = "test";
   m.sigmaA = sigmaA, m.sigmaS = sigmaS, m.eta = eta, m.g = g;
   return m;
+}
+
+/// Two independent estimates of the same value agree per channel within 4 combined standard
+/// errors, and that error is below `resolution` of a's mean: the test could tell a difference of
+/// about 4 x resolution. `what` names a and b in the message.
+inline void checkAgree(const Estimate& a, const Estimate& b, double resolution,
+                       const std::string& what) {
+  for (int c = 0; c < 3; ++c) {
+    const double se = std::hypot(a.stdError[c], b.stdError[c]);
+    INFO(what << ", channel " << c << ": " << a.mean[c] << " +- " << a.stdError[c] << " against "
+              << b.mean[c] << " +- " << b.stdError[c]);
+    CHECK(std::abs(a.mean[c] - b.mean[c]) <= 4 * se);
+    CHECK(se < resolution * a.mean[c]);
+  }
 }
 
 inline void checkClean(const reference::PathTracerStats& s) {

@@ -196,13 +196,7 @@ TEST_CASE("Behind a Fresnel boundary, light subpaths joined to the camera equal 
       estimate(reference::VolumePathTracer(scene, caster, {cap}, escape), 600000, rayOf, 4);
   const Estimate b =
       estimate(reference::VolumePathTracer(scene, caster, {cap}, join), 300000, rayOf, 5);
-  for (int c = 0; c < 3; ++c) {
-    const double se = std::hypot(a.stdError[c], b.stdError[c]);
-    INFO("channel " << c << ": escape " << a.mean[c] << " +- " << a.stdError[c] << ", joined "
-                    << b.mean[c] << " +- " << b.stdError[c]);
-    CHECK(std::abs(a.mean[c] - b.mean[c]) <= 4 * se);
-    CHECK(se < 0.035 * a.mean[c]);  // a test that could tell a 14 % error
-  }
+  checkAgree(a, b, 0.035, "escape against joined");  // a test that could tell a 14 % error
   checkClean(a.stats);
   checkClean(b.stats);
   CHECK(b.stats.connections > 0);

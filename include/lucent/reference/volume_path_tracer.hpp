@@ -197,19 +197,24 @@ class VolumePathTracer {
     // whole object left a 100 m spectralon sphere black (the camera's walk ends within a few mean
     // free paths of its entry). The disc's pdf is a mixture with a uniform part: any scale is
     // unbiased.
-    for (std::size_t i = 1; i < mScene.media.size(); ++i) {
-      const Medium& m = mScene.media[i];
-      if (m.vacuum()) continue;
-      const glm::dvec3 sigmaTPrime = m.sigmaA + (1 - m.g) * m.sigmaS;
-      const glm::dvec3 sigmaTr = glm::sqrt(3.0 * m.sigmaA * sigmaTPrime);
-      const double meanTr = (sigmaTr.x + sigmaTr.y + sigmaTr.z) / 3,
-                   meanT = (sigmaTPrime.x + sigmaTPrime.y + sigmaTPrime.z) / 3;
-      const double meanFreePath = meanT > 0 ? 1 / meanT : mRadius;
-      const double length =
-          std::clamp(meanTr > 0 ? 1 / meanTr : mRadius, meanFreePath, 10 * meanFreePath);
-      return std::min(length, mRadius);
-    }
-    return mRadius;
+    const Medium* m = firstMedium();
+    if (!m) return mRadius;
+    const glm::dvec3 sigmaTPrime = m->sigmaA + (1 - m->g) * m->sigmaS;
+    const glm::dvec3 sigmaTr = glm::sqrt(3.0 * m->sigmaA * sigmaTPrime);
+    const double meanTr = (sigmaTr.x + sigmaTr.y + sigmaTr.z) / 3,
+                 meanT = (sigmaTPrime.x + sigmaTPrime.y + sigmaTPrime.z) / 3;
+    const double meanFreePath = meanT > 0 ? 1 / meanT : mRadius;
+    const double length =
+        std::clamp(meanTr > 0 ? 1 / meanTr : mRadius, meanFreePath, 10 * meanFreePath);
+    return std::min(length, mRadius);
+  }
+
+  /// The object's medium, which sets the scales of the light subpaths and the hero choice: the
+  /// first one that is not vacuum (nullptr if none is).
+  const Medium* firstMedium() const {
+    for (std::size_t i = 1; i < mScene.media.size(); ++i)
+      if (!mScene.media[i].vacuum()) return &mScene.media[i];
+    return nullptr;
   }
 
   /// P_c = 0.8 Rd_c / sum Rd + 0.2 / 3 for the first medium's total diffuse reflectance Rd
@@ -217,16 +222,13 @@ class VolumePathTracer {
   /// image, and none less than 1/15 of the time. Uniform where Rd says nothing (no medium, or a
   /// pure absorber).
   glm::dvec3 reflectanceHeroChoice() const {
-    for (std::size_t i = 1; i < mScene.media.size(); ++i) {
-      const Medium& m = mScene.media[i];
-      if (m.vacuum()) continue;
-      const glm::dvec3 rd =
-          optics::Dipole<double>::make(m.sigmaA, (1 - m.g) * m.sigmaS, m.eta).total();
-      const double sum = rd.x + rd.y + rd.z;
-      if (!(sum > 0) || !std::isfinite(sum)) break;
-      return 0.8 * rd / sum + glm::dvec3(0.2 / 3);
-    }
-    return glm::dvec3(1.0 / 3);
+    const Medium* m = firstMedium();
+    if (!m) return glm::dvec3(1.0 / 3);
+    const glm::dvec3 rd =
+        optics::Dipole<double>::make(m->sigmaA, (1 - m->g) * m->sigmaS, m->eta).total();
+    const double sum = rd.x + rd.y + rd.z;
+    if (!(sum > 0) || !std::isfinite(sum)) return glm::dvec3(1.0 / 3);
+    return 0.8 * rd / sum + glm::dvec3(0.2 / 3);
   }
 
   void traceLightSubpaths(const glm::dvec3& entry, int hero, util::Rng& rng,
@@ -256,14 +258,14 @@ class VolumePathTracer {
     return true;
   }
 
-  /// Transmittance from x along `dir` over `length` through null interfaces only (0 at a specular
-  /// one), ending in `endMedium` when given.
   /// Where a straight segment ended: at its end, at a refracting facet, or neither known.
   struct SegmentEnd {
     bool reachedEnd = false;
     std::optional<std::uint32_t> refractingFacet;
   };
 
+  /// Transmittance from x along `dir` over `length` through null interfaces only (0 at a specular
+  /// one), ending in `endMedium` when given; `end`, when given, learns where the segment stopped.
   glm::dvec3 segmentTransmittance(glm::dvec3 x, std::uint32_t medium, const glm::dvec3& dir,
                                   double length, std::optional<std::uint32_t> endMedium,
                                   util::Rng& rng, PathTracerStats& st,
