@@ -109,7 +109,8 @@ TEST_CASE("Eq. 10 weights are unbiased: the mean over seeds equals the exhaustiv
   glm::dvec3 exact(0);
   for (std::size_t i = 0; i < irr.power.size(); ++i)
     if (irr.importance[i] > 0)
-      exact += glm::dvec3(irr.power[i]) * d.rd(glm::length(glm::dvec3(irr.surface->position[i]) - xo));
+      exact +=
+          glm::dvec3(irr.power[i]) * d.rd(glm::length(glm::dvec3(irr.surface->position[i]) - xo));
   for (const auto sampler : {atlas::TexelSampler::Mipmap, atlas::TexelSampler::RowMajor}) {
     atlas::SamplingOptions so;
     so.samples = 64;
@@ -206,8 +207,40 @@ TEST_CASE("Translucent shadow map on a flat slab: the ring filter returns E_t x 
   INFO("B " << b.x << " " << b.y << " " << b.z << " expected " << expected.x << " " << expected.y
             << " " << expected.z);
   CHECK(worstRelative(b, expected) < 0.02);
+  // The table path the hybrid uses (gathered taps, vectorised sum) against the same closed form.
+  const auto table = optics::radialTable(optics::Profile<double>(d), 100.0f);
+  const glm::dvec3 bTable =
+      map.filterTable(glm::dvec3(0.0123, -0.0371, 10.0), ring, reference::PlanarRadialTable(table));
+  CHECK(worstRelative(bTable, expected) < 0.02);
   // And the map holds what the light puts in: E_t times the lit top face (120 x 120 mm).
   CHECK(map.totalPower().x == doctest::Approx(et * 120 * 120).epsilon(0.01));
+}
+
+TEST_CASE(
+    "The ring filter's table path equals the per-tap estimator, where the map is partly "
+    "covered and off it") {
+  // A sphere fills a disc of the map: points near its rim have taps on empty texels and off the
+  // map, and points beside it none on the surface.
+  SmallScene s(scene::shapes::sphere(1.0, 3), 10.0, 24);
+  const auto d = dipoleOf<double>("skin1");
+  const auto table = optics::radialTable(optics::Profile<double>(d), 20.0f);
+  const reference::PlanarRadialTable planar(table);
+  auto f = [&](double r) { return glm::dvec3(table(float(r))); };
+  const auto ring = atlas::makeRingFilter(f, 12, 10, 20.0);
+  const atlas::TranslucentShadowMap map(s.lights[1], s.mesh, s.normals, *s.caster, s.irr, 96);
+  util::Rng rng(7);
+  int nonZero = 0;
+  for (int i = 0; i < 300; ++i) {
+    const glm::dvec3 x =
+        7.0 * glm::dvec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
+    const glm::dvec3 perTap = map.filter(x, ring, f), gathered = map.filterTable(x, ring, planar);
+    nonZero += perTap.x > 0;
+    INFO("x " << x.x << " " << x.y << " " << x.z << " per tap " << perTap.x << " gathered "
+              << gathered.x);
+    for (int c = 0; c < 3; ++c)
+      CHECK(std::abs(gathered[c] - perTap[c]) <= 1e-5 * std::max(perTap[c], 1e-30) + 1e-30);
+  }
+  CHECK(nonZero > 100);  // the points did reach the surface
 }
 
 TEST_CASE("No light reaching the surface: no samples, black image, no division by zero") {

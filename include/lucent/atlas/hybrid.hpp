@@ -42,9 +42,8 @@ class LocalTermEvaluator {
       : mMaps(std::move(maps)), mRing(std::move(ring)), mProfile(profile), mFt(eta) {}
 
   glm::dvec3 radiosity(const glm::dvec3& xo) const {
-    auto f = [this](double r) { return glm::dvec3(mProfile(float(r))); };
     glm::dvec3 b(0);
-    for (const auto& m : mMaps) b += m.filter(xo, mRing, f);
+    for (const auto& m : mMaps) b += m.filterTable(xo, mRing, mProfile);
     return b;
   }
   double fresnelOverPi(double cosOut) const { return double(mFt(float(cosOut))) / optics::kPi; }
@@ -56,7 +55,7 @@ class LocalTermEvaluator {
  private:
   std::vector<TranslucentShadowMap> mMaps;
   RingFilter mRing;
-  const optics::RadialTable<float>& mProfile;
+  reference::PlanarRadialTable mProfile;
   optics::FtTable<float> mFt;
 };
 

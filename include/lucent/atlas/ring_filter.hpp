@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "../optics/constants.hpp"
@@ -39,7 +40,14 @@ struct RingFilter {
   /// C_c on r_j = domain (j / J)^2 (the grid the radii were placed on), for centreTransfer.
   std::vector<glm::dvec3> cumulative;
   double domain = 0;
+  /// The ring taps, ring by ring, C per ring: the offset from x_o's projection at turn 0 (mm, on
+  /// the map's two axes; ring k's spokes start at k golden angles, so rings do not line up), and
+  /// ratioFactor of the tap. Computed once, so no per-point work repeats them.
+  std::vector<glm::dvec2> tapOffset;
+  std::vector<glm::dvec3> tapFactor;
   int sampleCount() const { return rings * perRing + 1; }
+  /// The stratum of ring tap j (1..L).
+  std::size_t tapStratum(std::size_t j) const { return j / std::size_t(perRing) + 1; }
 
   /// C_c(r), linear between the grid's nodes; the total beyond the domain.
   glm::dvec3 cumulativeAt(double r) const {
@@ -62,9 +70,13 @@ struct RingFilter {
   /// A tap of stratum k holding `value` = rho f(d) (or rho times any kernel the filter stands for):
   /// its share of the stratum's mass times value / f(r_k), the ratio estimator (file comment).
   glm::dvec3 tapEstimate(std::size_t k, double share, const glm::dvec3& value) const {
+    return ratioFactor(k, share) * value;
+  }
+  /// share M_k,c / f_c(r_k) per channel, 0 where f_c(r_k) = 0.
+  glm::dvec3 ratioFactor(std::size_t k, double share) const {
     glm::dvec3 e(0);
     for (int c = 0; c < 3; ++c)
-      if (profileAt[k][c] > 0) e[c] = share * mass[k][c] * value[c] / profileAt[k][c];
+      if (profileAt[k][c] > 0) e[c] = share * mass[k][c] / profileAt[k][c];
     return e;
   }
 };
@@ -116,6 +128,19 @@ inline double radiusAtFraction(const std::vector<double>& combined, double q, do
   const double lo = ringGridRadius(j - 1, domain);
   return lo + f * (ringGridRadius(j, domain) - lo);
 }
+
+/// Fills the filter's tap offsets and factors from its radii and masses.
+inline void placeTaps(RingFilter& filter) {
+  filter.tapOffset.clear();
+  filter.tapFactor.clear();
+  for (int k = 1; k <= filter.rings; ++k)
+    for (int c = 0; c < filter.perRing; ++c) {
+      const double phi = optics::kGoldenAngle * k + 2 * optics::kPi * c / filter.perRing;
+      const double r = filter.radius[std::size_t(k)];
+      filter.tapOffset.emplace_back(r * std::cos(phi), r * std::sin(phi));
+      filter.tapFactor.push_back(filter.ratioFactor(std::size_t(k), 1.0 / filter.perRing));
+    }
+}
 }  // namespace detail
 
 /// @param profile callable double -> glm::dvec3, f(r) >= 0 and non-increasing; @param domain the
@@ -138,6 +163,7 @@ RingFilter makeRingFilter(const Profile& profile, int rings, int perRing, double
     filter.radius.assign(std::size_t(rings) + 1, 0.0);
     filter.mass.assign(std::size_t(rings) + 1, glm::dvec3(0));
     filter.profileAt.assign(std::size_t(rings) + 1, glm::dvec3(0));
+    detail::placeTaps(filter);
     return filter;
   }
   const auto inverse = [&](double q) { return detail::radiusAtFraction(combined, q, domain); };
@@ -152,6 +178,7 @@ RingFilter makeRingFilter(const Profile& profile, int rings, int perRing, double
     filter.mass.push_back(filter.cumulativeAt(hi) - filter.cumulativeAt(lo));
     filter.profileAt.push_back(profile(rk));
   }
+  detail::placeTaps(filter);
   return filter;
 }
 

@@ -20,7 +20,9 @@
 #include <vector>
 
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 
+#include "../reference/radial_table_sum.hpp"
 #include "../scene/irradiance.hpp"
 #include "../scene/mesh.hpp"
 #include "../util/basis.hpp"
@@ -76,8 +78,7 @@ class TranslucentShadowMap {
     mHalfExtent = radius;
     mTexel = 2 * radius / resolution;
     const std::size_t texels = std::size_t(resolution) * resolution;
-    mPosition.assign(texels, glm::vec3(0));
-    mDensity.assign(texels, glm::vec3(0));
+    mTexels.assign(texels, MapTexel{});
     mValid.assign(texels, 0);
     const std::vector<scene::Light> one{light};
     parallelFor(std::size_t(resolution), [&](std::size_t begin, std::size_t end) {
@@ -96,8 +97,7 @@ class TranslucentShadowMap {
           const double obliquity =
               std::min(kMaxObliquity, 1.0 / std::max(std::abs(glm::dot(fn, mAxis)), 1e-12));
           const std::size_t i = y * resolution + std::size_t(x);
-          mPosition[i] = glm::vec3(x3);
-          mDensity[i] = glm::vec3(e * obliquity);
+          mTexels[i] = {glm::vec3(x3), glm::vec3(e * obliquity)};
           mValid[i] = 1;
         }
     });
@@ -110,22 +110,14 @@ class TranslucentShadowMap {
   template <class Visit>
   void forEachTap(const glm::dvec3& xo, const RingFilter& ring, Visit&& visit,
                   double turn = 0) const {
-    const glm::dvec3 rel = xo - mCenter;
-    const double pu = glm::dot(rel, mT), pv = glm::dot(rel, mB);
-    auto at = [&](double u, double v, std::size_t k, double share) {
-      const int x = int(std::floor((u + mHalfExtent) / mTexel));
-      const int y = int(std::floor((v + mHalfExtent) / mTexel));
-      if (x < 0 || y < 0 || x >= mResolution || y >= mResolution) return;
-      const std::size_t i = std::size_t(y) * std::size_t(mResolution) + std::size_t(x);
-      if (mValid[i]) visit(i, k, share);
-    };
-    at(pu, pv, 0, 1.0);
-    for (int k = 1; k <= ring.rings; ++k)
-      for (int c = 0; c < ring.perRing; ++c) {
-        const double phi = turn + optics::kGoldenAngle * k + 2 * optics::kPi * c / ring.perRing;
-        at(pu + ring.radius[std::size_t(k)] * std::cos(phi),
-           pv + ring.radius[std::size_t(k)] * std::sin(phi), std::size_t(k), 1.0 / ring.perRing);
-      }
+    const glm::dvec2 p = project(xo);
+    const double ct = std::cos(turn), st = std::sin(turn);
+    if (const std::size_t i = coveredTexel(p); i != kUncovered) visit(i, std::size_t(0), 1.0);
+    for (std::size_t j = 0; j < ring.tapOffset.size(); ++j) {
+      const glm::dvec2 o = ring.tapOffset[j];
+      const std::size_t i = coveredTexel(p + glm::dvec2(ct * o.x - st * o.y, st * o.x + ct * o.y));
+      if (i != kUncovered) visit(i, ring.tapStratum(j), 1.0 / ring.perRing);
+    }
   }
 
   /// int rho f(|x - x_o|) dA over the map around x_o's projection, by the ring filter (per
@@ -135,39 +127,106 @@ class TranslucentShadowMap {
   glm::dvec3 filter(const glm::dvec3& xo, const RingFilter& ring, const Profile& profile) const {
     glm::dvec3 sum(0);
     forEachTap(xo, ring, [&](std::size_t i, std::size_t k, double share) {
-      const double d = glm::length(glm::dvec3(mPosition[i]) - xo);
-      if (k == 0) {  // the centre's disc (ring_filter.hpp): exact for a flat disc d off its plane
-        sum += ring.mass[0] * glm::dvec3(mDensity[i]) * ring.centreTransfer(d);
+      const double d = glm::length(position(i) - xo);
+      if (k == 0) {
+        sum += centreEstimate(ring, i, d);
         return;
       }
-      sum += ring.tapEstimate(k, share, glm::dvec3(mDensity[i]) * profile(d));
+      sum += ring.tapEstimate(k, share, density(i) * profile(d));
     });
     return sum;
+  }
+
+  /// filter() for a profile held in a radial table, as the hybrid's is: the covered ring taps are
+  /// gathered into float arrays (position, rho times the tap's ratio factor) and summed by the
+  /// vectorised table kernel that TSIS uses (radial_table_sum.hpp). Equal to filter() with that
+  /// table to float rounding; no trigonometry or division per tap.
+  glm::dvec3 filterTable(const glm::dvec3& xo, const RingFilter& ring,
+                         const reference::PlanarRadialTable& table) const {
+    thread_local TapBuffer taps;
+    taps.reserve(ring.tapOffset.size());
+    const glm::dvec2 p = project(xo);
+    glm::dvec3 sum(0);
+    if (const std::size_t i = coveredTexel(p); i != kUncovered)
+      sum += centreEstimate(ring, i, glm::length(position(i) - xo));
+    // The taps in texel units: no division or floor per tap (the loop is a gather, its arithmetic
+    // must be cheap), in double: a tap on a texel edge differs from coveredTexel only by rounding.
+    const double inv = 1 / mTexel, ox = (p.x + mHalfExtent) * inv, oy = (p.y + mHalfExtent) * inv;
+    const double size = double(mResolution);
+    std::size_t n = 0;
+    for (std::size_t j = 0; j < ring.tapOffset.size(); ++j) {
+      const double fx = ox + ring.tapOffset[j].x * inv, fy = oy + ring.tapOffset[j].y * inv;
+      if (!(fx >= 0 && fy >= 0 && fx < size && fy < size)) continue;
+      const std::size_t i = std::size_t(fy) * std::size_t(mResolution) + std::size_t(fx);
+      if (!mValid[i]) continue;
+      const MapTexel& t = mTexels[i];
+      const glm::vec3 w = glm::vec3(ring.tapFactor[j]) * t.density;
+      taps.x[n] = t.position.x, taps.y[n] = t.position.y, taps.z[n] = t.position.z;
+      taps.w0[n] = w.x, taps.w1[n] = w.y, taps.w2[n] = w.z;
+      ++n;
+    }
+    double ring3[3];
+    reference::radialTableSum({taps.x.data(), taps.y.data(), taps.z.data(), taps.w0.data(),
+                               taps.w1.data(), taps.w2.data(), n},
+                              table, float(xo.x), float(xo.y), float(xo.z), ring3);
+    return sum + glm::dvec3(ring3[0], ring3[1], ring3[2]);
   }
 
   ///@{ A texel: whether the surface covers it, its first hit (mm), rho (power per unit map area).
   std::size_t texelCount() const { return mValid.size(); }
   bool covered(std::size_t texel) const { return mValid[texel] != 0; }
-  glm::dvec3 position(std::size_t texel) const { return glm::dvec3(mPosition[texel]); }
-  glm::dvec3 density(std::size_t texel) const { return glm::dvec3(mDensity[texel]); }
+  glm::dvec3 position(std::size_t texel) const { return glm::dvec3(mTexels[texel].position); }
+  glm::dvec3 density(std::size_t texel) const { return glm::dvec3(mTexels[texel].density); }
   ///@}
 
   /// The power the map holds (sum of rho times the texel area): what the light puts into the
   /// surface it sees.
   glm::dvec3 totalPower() const {
     glm::dvec3 s(0);
-    for (std::size_t i = 0; i < mDensity.size(); ++i)
-      s += glm::dvec3(mDensity[i]) * (mTexel * mTexel);
+    for (const MapTexel& t : mTexels) s += glm::dvec3(t.density) * (mTexel * mTexel);
     return s;
   }
   int resolution() const { return mResolution; }
   double texelSize() const { return mTexel; }
 
  private:
+  static constexpr std::size_t kUncovered = std::numeric_limits<std::size_t>::max();
+
+  /// Float arrays of the taps that land on covered texels (structure of arrays for the kernel).
+  struct TapBuffer {
+    std::vector<float> x, y, z, w0, w1, w2;
+    void reserve(std::size_t n) {
+      for (auto* v : {&x, &y, &z, &w0, &w1, &w2})
+        if (v->size() < n) v->resize(n);
+    }
+  };
+
+  /// x_o's projection on the map's plane (mm along t and b from its centre).
+  glm::dvec2 project(const glm::dvec3& xo) const {
+    const glm::dvec3 rel = xo - mCenter;
+    return {glm::dot(rel, mT), glm::dot(rel, mB)};
+  }
+  /// The texel holding plane point p, or kUncovered when p is off the map or on no surface.
+  std::size_t coveredTexel(const glm::dvec2& p) const {
+    const int x = int(std::floor((p.x + mHalfExtent) / mTexel));
+    const int y = int(std::floor((p.y + mHalfExtent) / mTexel));
+    if (x < 0 || y < 0 || x >= mResolution || y >= mResolution) return kUncovered;
+    const std::size_t i = std::size_t(y) * std::size_t(mResolution) + std::size_t(x);
+    return mValid[i] ? i : kUncovered;
+  }
+  /// The centre tap: its disc, exact for a flat disc d off its plane (ring_filter.hpp).
+  glm::dvec3 centreEstimate(const RingFilter& ring, std::size_t i, double d) const {
+    return ring.mass[0] * density(i) * ring.centreTransfer(d);
+  }
+
   int mResolution;
   glm::dvec3 mCenter{0}, mAxis{0, 0, -1}, mT{1, 0, 0}, mB{0, 1, 0};
   double mHalfExtent = 0, mTexel = 0;
-  std::vector<glm::vec3> mPosition, mDensity;
+  /// A texel's first hit and rho side by side: a tap reads one cache line, not two.
+  struct MapTexel {
+    glm::vec3 position{0}, density{0};
+  };
+  std::vector<MapTexel> mTexels;
   std::vector<std::uint8_t> mValid;
 };
 
