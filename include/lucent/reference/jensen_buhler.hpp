@@ -8,8 +8,11 @@
 /// every sample: the exact sum. Chang et al. 2008 used it as ground truth and speed
 /// baseline.
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
+#include <memory>
 #include <numeric>
+#include <type_traits>
 #include <vector>
 
 #include <glm/common.hpp>
@@ -17,6 +20,7 @@
 
 #include "dipole_truth.hpp"
 #include "point_octree.hpp"
+#include "rd_sum_kernel.hpp"
 
 namespace lucent::reference {
 
@@ -58,6 +62,9 @@ class JensenBuhlerTree {
       }
       cluster.center = weight > 0 ? weighted / weight : 0.5 * (topology.lo + topology.hi);
     }
+    for (auto& a : mOrdered.array) a.resize(n);
+    for (std::size_t k = 0; k < n; ++k)
+      mOrdered.set(k, mPosition[mTree.order()[k]], mPower[mTree.order()[k]]);
   }
 
   /// B(xo) by the hierarchical approximation (Eq. 3 of Chang et al. 2008), with the
@@ -68,39 +75,59 @@ class JensenBuhlerTree {
   }
 
   glm::dvec3 treeSum(const glm::dvec3& xo) const {
+    if constexpr (std::is_same_v<T, float>)
+      if (mDipole.isPolePair()) return treeSumVectorised(xo);
     // The dipoles' closed form directly: the profile's per-call dispatch would cost 3x per Rd.
     return mDipole.isPolePair() ? treeSumWith(xo, mPoles) : treeSumWith(xo, mDipole);
   }
 
+  /// The sum one Rd at a time, in T.
   template <class Rd>
   glm::dvec3 treeSumWith(const glm::dvec3& xo, const Rd& profile) const {
     glm::dvec3 sum(0);
-    if (mNodes.empty()) return sum;
-    std::vector<std::uint32_t> stack{0};
-    stack.reserve(64);
-    const auto& nodes = mTree.nodes();
-    const auto& order = mTree.order();
-    while (!stack.empty()) {
-      const std::uint32_t index = stack.back();
-      stack.pop_back();
-      const PointOctree::Node& node = nodes[index];
-      const Cluster& cluster = mNodes[index];
-      const glm::dvec3 d = xo - cluster.center;
-      const double dist2 = glm::dot(d, d);
-      if (!node.contains(xo) && cluster.area < mEpsilon * dist2) {
-        sum += cluster.power * glm::dvec3(profile.rd(T(std::sqrt(dist2))));
-      } else if (node.leaf()) {
-        for (std::uint32_t k = node.begin; k < node.end; ++k) {
-          const std::uint32_t i = order[k];
-          sum += mPower[i] * glm::dvec3(profile.rd(T(glm::length(xo - mPosition[i]))));
-        }
-      } else {
-        for (std::uint32_t c = 0; c < 8; ++c)
-          if (!nodes[node.firstChild + c].empty()) stack.push_back(node.firstChild + c);
-      }
-    }
+    auto add = [&](const glm::dvec3& x, const glm::dvec3& power) {
+      sum += power * glm::dvec3(profile.rd(T(glm::length(xo - x))));
+    };
+    const std::size_t terms = traverse(
+        xo, [&](const Cluster& c) { add(c.center, c.power); },
+        [&](std::uint32_t begin, std::uint32_t end) {
+          for (std::uint32_t k = begin; k < end; ++k)
+            add(mPosition[mTree.order()[k]], mPower[mTree.order()[k]]);
+        });
+    mTerms->fetch_add(terms, std::memory_order_relaxed);
     return sum;
   }
+
+  /// The same sources gathered into float arrays and summed by the truth's vectorised kernel
+  /// (rd_sum_kernel.hpp), so that the octree is measured with the same leaf kernel as the
+  /// techniques it is the baseline of. A leaf's samples are one range of arrays kept in tree
+  /// order, copied whole.
+  glm::dvec3 treeSumVectorised(const glm::dvec3& xo) const {
+    thread_local SourceArrays gathered;
+    std::size_t n = 0;
+    const std::size_t terms = traverse(
+        xo,
+        [&](const Cluster& c) {
+          gathered.fit(n + 1);
+          gathered.set(n++, c.center, c.power);
+        },
+        [&](std::uint32_t begin, std::uint32_t end) {
+          gathered.fit(n + (end - begin));
+          for (int a = 0; a < SourceArrays::kArrays; ++a)
+            std::copy(mOrdered.array[a].begin() + begin, mOrdered.array[a].begin() + end,
+                      gathered.array[a].begin() + std::ptrdiff_t(n));
+          n += end - begin;
+        });
+    mTerms->fetch_add(terms, std::memory_order_relaxed);
+    const auto& g = gathered.array;
+    double out[3];
+    rdSumFloat({g[0].data(), g[1].data(), g[2].data(), g[3].data(), g[4].data(), g[5].data(), n},
+               mKernel, float(xo.x), float(xo.y), float(xo.z), out);
+    return {out[0], out[1], out[2]};
+  }
+
+  /// Rd terms summed so far (leaf samples and whole nodes), for the stage's rate.
+  std::uint64_t termCount() const { return mTerms->load(std::memory_order_relaxed); }
 
   glm::dvec3 radiance(const glm::dvec3& xo, double cosOut) const {
     return radiosity(xo) * (optics::fresnelTransmittance(cosOut, double(mDipole.eta)) *
@@ -116,6 +143,48 @@ class JensenBuhlerTree {
     double area = 0;
   };
 
+  /// Sources as float arrays x, y, z, w0, w1, w2 (the kernel's layout).
+  struct SourceArrays {
+    static constexpr int kArrays = 6;
+    std::vector<float> array[kArrays];
+    void fit(std::size_t n) {
+      if (array[0].size() < n)
+        for (auto& a : array) a.resize(std::max<std::size_t>(2 * n, 1024));
+    }
+    void set(std::size_t i, const glm::dvec3& x, const glm::dvec3& w) {
+      array[0][i] = float(x.x), array[1][i] = float(x.y), array[2][i] = float(x.z);
+      array[3][i] = float(w.x), array[4][i] = float(w.y), array[5][i] = float(w.z);
+    }
+  };
+
+  /// Descends the tree for x_o: onNode(cluster) for a node small as seen from x_o (the file
+  /// comment's criterion), onLeaf(begin, end) for a leaf's samples (a range in tree order)
+  /// otherwise. Returns the number of sources visited.
+  template <class OnNode, class OnLeaf>
+  std::size_t traverse(const glm::dvec3& xo, OnNode&& onNode, OnLeaf&& onLeaf) const {
+    if (mNodes.empty()) return 0;
+    thread_local std::vector<std::uint32_t> stack;
+    stack.assign(1, 0);
+    const auto& nodes = mTree.nodes();
+    std::size_t visited = 0;
+    while (!stack.empty()) {
+      const std::uint32_t index = stack.back();
+      stack.pop_back();
+      const PointOctree::Node& node = nodes[index];
+      const Cluster& cluster = mNodes[index];
+      const glm::dvec3 d = xo - cluster.center;
+      if (!node.contains(xo) && cluster.area < mEpsilon * glm::dot(d, d)) {
+        onNode(cluster), ++visited;
+      } else if (node.leaf()) {
+        onLeaf(node.begin, node.end), visited += node.end - node.begin;
+      } else {
+        for (std::uint32_t c = 0; c < 8; ++c)
+          if (!nodes[node.firstChild + c].empty()) stack.push_back(node.firstChild + c);
+      }
+    }
+    return visited;
+  }
+
   optics::Profile<T> mDipole;
   optics::Dipole<T> mPoles = mDipole.poles();  ///< the same, when it is a dipole
   const NearField* mNear;                      ///< the truth's, which outlives the tree
@@ -125,6 +194,12 @@ class JensenBuhlerTree {
   std::vector<double> mArea;
   PointOctree mTree;
   std::vector<Cluster> mNodes;  ///< per node of mTree
+  SourceArrays mOrdered;        ///< the samples in tree order, for treeSumVectorised
+  RdKernelConstants mKernel =
+      mDipole.isPolePair() ? RdKernelConstants::from(mDipole) : RdKernelConstants{};
+  /// Behind a pointer: the tree stays movable.
+  std::unique_ptr<std::atomic<std::uint64_t>> mTerms =
+      std::make_unique<std::atomic<std::uint64_t>>(0);
 };
 
 }  // namespace lucent::reference

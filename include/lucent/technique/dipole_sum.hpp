@@ -213,8 +213,10 @@ inline Technique jensenBuhlerTechnique() {
           const auto tree = st.timeFrame(
               "octree", [&] { return reference::JensenBuhlerTree<T>(truth, epsilon); });
           st.figures["octree_nodes"] = double(tree.nodeCount());
-          return st.timeFrame("evaluation",
-                              [&] { return radiosityAt(tree, s, request, "octree sum"); });
+          auto b = st.timeFrame("evaluation",
+                                [&] { return radiosityAt(tree, s, request, "octree sum"); });
+          st.figures["rd_terms"] = double(tree.termCount());
+          return b;
         });
   };
   return withSingleScattering(std::move(t));
