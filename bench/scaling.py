@@ -205,7 +205,11 @@ def main():
 
 def plot(series, path):
     """Frame and prepare time against triangles, log-log; series: name -> [(tris, prep, frame)]."""
-    import matplotlib
+    try:
+        import matplotlib
+    except ImportError:  # not among lucent's dependencies: the table and CSV stand alone
+        print("no plot: matplotlib is missing (apt-get install python3-matplotlib)", file=sys.stderr)
+        return
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
