@@ -69,6 +69,8 @@ def techniques(lucent):
 def render(lucent, tech, mesh, width, knob, work, timeout):
     """Runs one render; returns its statistics' figures and wall time, or None with the reason."""
     stats = os.path.join(work, "stats.json")
+    if os.path.exists(stats):
+        os.remove(stats)  # a run that writes none must not read the previous run's
     cmd = [lucent, "render", "--mesh", mesh, "--method", tech["name"], "--width", str(width),
            "--height", str(width), "--quiet", "--stats", stats, "--out",
            os.path.join(work, "out.exr")] + tech["lights"]
@@ -106,101 +108,115 @@ def fit(xs, ys):
     return float(np.polyfit(lx, ly, 1)[0])
 
 
+def measure(lucent, tech, mesh, width, knob, work, timeout, label):
+    """One render, logged; returns (prepare, frame, per-point seconds, shaded pixels) or the reason."""
+    fig, why = render(lucent, tech, mesh, width, knob, work, timeout)
+    print("%-14s %s: %s" % (tech["name"], label, why or "%.2f s" % fig["wall"]), file=sys.stderr,
+          flush=True)
+    if not fig:
+        return None, why
+    return (fig.get("prepare_seconds", 0), fig["frame_seconds"], per_point(fig),
+            fig.get("shaded_pixels", width * width)), ""
+
+
+def time_technique(args, tech, meshes, widths, work, rows):
+    """The three series of one technique (rows of the CSV appended), and its table entry."""
+    base_width = 96
+    sweep = tech["sweep"]
+    cheapest = (sweep["knob"], sweep["values"][0]) if sweep else None
+    moderate = meshes[1][1]  # pixels and knob on a 30-40 k triangle mesh: every technique can
+    series = {"triangles": [], "pixels": [], "knob": []}
+    refused = ""
+
+    def record(axis, value, m):
+        series[axis].append((value, m[0], m[1] if axis == "triangles" else m[2]))
+        rows.append([tech["name"], axis if axis != "knob" else sweep["knob"], value] + list(m[:3]))
+
+    for tris, path in meshes:
+        if refused.startswith("timeout"):
+            break  # a finer mesh would only time out too
+        m, why = measure(args.lucent, tech, path, base_width, cheapest, work, args.timeout,
+                         "%8d triangles" % tris)
+        refused = refused or why
+        if m:
+            record("triangles", tris, m)
+    for w in widths:
+        m, _ = measure(args.lucent, tech, moderate, w, cheapest, work, args.timeout, "%5d px wide" % w)
+        if m:
+            record("pixels", m[3], m)
+    for v in sweep["values"] if sweep else []:
+        try:
+            value = float(v)
+        except ValueError:
+            continue
+        m, _ = measure(args.lucent, tech, moderate, base_width, (sweep["knob"], v), work, args.timeout,
+                       "%s=%s" % (sweep["knob"], v))
+        if m:
+            record("knob", value, m)
+    tri = series["triangles"]
+    return {
+        "name": tech["name"] + (" (uniform sky)" if tech["lights"] else ""),
+        "prep_tri": fit([r[0] for r in tri], [r[1] for r in tri]),
+        "frame_tri": fit([r[0] for r in tri], [r[2] for r in tri]),
+        "frame_px": fit([r[0] for r in series["pixels"]], [r[2] for r in series["pixels"]]),
+        "knob": sweep["knob"] if sweep else "",
+        "frame_knob": fit([r[0] for r in series["knob"]], [r[2] for r in series["knob"]]),
+        "span": ("%d-%d" % (tri[0][0], tri[-1][0]) if tri else "none") +
+                (" (%s)" % short(refused) if refused else ""),
+        "claim": "prepare %s; frame %s" % (tech["precompute"], tech["frame"]),
+        "series": series,
+    }
+
+
+def write_results(table, rows, out):
+    with open(os.path.join(out, "scaling.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["technique", "axis", "value", "prepare_seconds", "frame_seconds", "per_point_seconds"])
+        w.writerows(rows)
+    lines = ["| technique | triangles timed | prepare ~ tris^b | frame ~ tris^b | "
+             "per-point stage ~ pixels^b | per-point stage ~ knob^b (knob) | the registry's claim |",
+             "|---|---|---|---|---|---|---|"]
+    for r in table:
+        lines.append("| %s | %s | %.2f | %.2f | %.2f | %.2f (%s) | %s |" % (
+            r["name"], r["span"], r["prep_tri"], r["frame_tri"], r["frame_px"], r["frame_knob"],
+            r["knob"], r["claim"]))
+    text = "\n".join(lines)
+    print(text)
+    with open(os.path.join(out, "scaling.md"), "w") as f:
+        f.write(text + "\n")
+    plot({r["name"]: r["series"]["triangles"] for r in table}, os.path.join(out, "scaling.png"))
+    print("CSV, table and plot in %s" % out)
+
+
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("lucent")
     ap.add_argument("--out", default="scaling_out")
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--timeout", type=int, default=150, help="seconds per render (default 150)")
-    ap.add_argument("--only", default="", help="comma-separated technique names (default: all usable)")
+    ap.add_argument("--only", default="", help="comma-separated technique names (default: all)")
     ap.add_argument("--replot", metavar="CSV", help="only redraw OUT/scaling.png from a run's CSV")
     args = ap.parse_args()
+    os.makedirs(args.out, exist_ok=True)
     if args.replot:
-        os.makedirs(args.out, exist_ok=True)
         replot(args.replot, os.path.join(args.out, "scaling.png"))
         return
-    os.makedirs(args.out, exist_ok=True)
-    counts = [10_000, 40_000, 160_000] if args.quick else [10_000, 30_000, 100_000, 300_000, 1_000_000]
+    counts = [10_000, 40_000, 160_000] if args.quick else [10_000, 30_000, 100_000, 300_000,
+                                                             1_000_000]
     widths = [96, 192, 384] if args.quick else [96, 192, 384, 768]
-    base_width = 96
     techs = techniques(args.lucent)
     if args.only:
-        keep = set(args.only.split(","))
-        techs = [t for t in techs if t["name"] in keep]
-
+        techs = [t for t in techs if t["name"] in set(args.only.split(","))]
     rows, table = [], []
     with tempfile.TemporaryDirectory() as work:
         meshes = []
         for n in counts:
             path = os.path.join(work, "sphere_%d.ply" % n)
             meshes.append((sphere_mesh(path, n), path))
-        moderate = meshes[1]  # pixels and knob on a 30-40 k triangle mesh: every technique can
         for t in techs:
-            cheapest = (t["sweep"]["knob"], t["sweep"]["values"][0]) if t["sweep"] else None
-            series = {"triangles": [], "pixels": [], "knob": []}
-            refused = ""
-            for tris, path in meshes:
-                if refused.startswith("timeout"):
-                    break  # a finer mesh would only time out too
-                fig, why = render(args.lucent, t, path, base_width, cheapest, work, args.timeout)
-                print("%-14s %8d triangles: %s" % (t["name"], tris, why or "%.2f s" % fig["wall"]),
-                      file=sys.stderr, flush=True)
-                refused = refused or why
-                if fig:
-                    series["triangles"].append((tris, fig.get("prepare_seconds", 0), fig["frame_seconds"]))
-                    rows.append([t["name"], "triangles", tris, fig.get("prepare_seconds", 0), fig["frame_seconds"]])
-            for w in widths:
-                fig, why = render(args.lucent, t, moderate[1], w, cheapest, work, args.timeout)
-                print("%-14s %8d px wide: %s" % (t["name"], w, why or "%.2f s" % fig["wall"]),
-                      file=sys.stderr, flush=True)
-                if fig:
-                    px = fig.get("shaded_pixels", w * w)
-                    series["pixels"].append((px, 0, per_point(fig)))
-                    rows.append([t["name"], "pixels", px, fig.get("prepare_seconds", 0), fig["frame_seconds"]])
-            if t["sweep"]:
-                for v in t["sweep"]["values"]:
-                    try:
-                        value = float(v)
-                    except ValueError:
-                        continue
-                    fig, why = render(args.lucent, t, moderate[1], base_width, (t["sweep"]["knob"], v),
-                                      work, args.timeout)
-                    print("%-14s %s=%s: %s" % (t["name"], t["sweep"]["knob"], v,
-                                               why or "%.2f s" % fig["wall"]), file=sys.stderr, flush=True)
-                    if fig:
-                        series["knob"].append((value, fig.get("prepare_seconds", 0), per_point(fig)))
-                        rows.append([t["name"], t["sweep"]["knob"], value, fig.get("prepare_seconds", 0),
-                                     fig["frame_seconds"]])
-            tri = series["triangles"]
-            table.append({
-                "name": t["name"] + (" (uniform sky)" if t["lights"] else ""),
-                "prep_tri": fit([r[0] for r in tri], [r[1] for r in tri]),
-                "frame_tri": fit([r[0] for r in tri], [r[2] for r in tri]),
-                "frame_px": fit([r[0] for r in series["pixels"]], [r[2] for r in series["pixels"]]),
-                "knob": t["sweep"]["knob"] if t["sweep"] else "",
-                "frame_knob": fit([r[0] for r in series["knob"]], [r[2] for r in series["knob"]]),
-                "span": ("%d-%d" % (tri[0][0], tri[-1][0]) if tri else "none") +
-                        (" (%s)" % short(refused) if refused else ""),
-                "claim": "prepare %s; frame %s" % (t["precompute"], t["frame"]),
-                "series": series,
-            })
-
-    with open(os.path.join(args.out, "scaling.csv"), "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(["technique", "axis", "value", "prepare_seconds", "frame_seconds"])
-        w.writerows(rows)
-    lines = ["| technique | triangles timed | prepare ~ tris^b | frame ~ tris^b | per-point stage ~ pixels^b | "
-             "per-point stage ~ knob^b (knob) | the registry's claim |", "|---|---|---|---|---|---|---|"]
-    for r in table:
-        lines.append("| %s | %s | %.2f | %.2f | %.2f | %.2f (%s) | %s |" % (
-            r["name"], r["span"], r["prep_tri"], r["frame_tri"], r["frame_px"], r["frame_knob"], r["knob"],
-            r["claim"]))
-    text = "\n".join(lines)
-    print(text)
-    with open(os.path.join(args.out, "scaling.md"), "w") as f:
-        f.write(text + "\n")
-    plot({r["name"]: r["series"]["triangles"] for r in table}, os.path.join(args.out, "scaling.png"))
-    print("CSV, table and plot in %s" % args.out)
+            table.append(time_technique(args, t, meshes, widths, work, rows))
+    write_results(table, rows, args.out)
 
 
 def plot(series, path):

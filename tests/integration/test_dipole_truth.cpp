@@ -201,7 +201,10 @@ TEST_CASE("Jensen-Buhler: epsilon = 0 is the exact sum, the error shrinks with e
                                glm::dvec3(s.mesh.positions[7])}) {
       const glm::dvec3 a = treeF.treeSum(p), b = treeD.treeSum(p);
       INFO("epsilon " << eps << " float " << a.x << " double " << b.x);
-      for (int c = 0; c < 3; ++c) CHECK(a[c] == doctest::Approx(b[c]).epsilon(2e-4));
+      for (int c = 0; c < 3; ++c) {
+        CHECK(b[c] > 0);  // relative agreement means something only for a lit sum
+        CHECK(std::abs(a[c] - b[c]) <= 2e-4 * std::abs(b[c]));
+      }
     }
     CHECK(treeF.termCount() == treeD.termCount());
   }

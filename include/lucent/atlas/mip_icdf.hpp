@@ -2,12 +2,11 @@
 /// @file mip_icdf.hpp
 /// @brief Importance sampling of texels in proportion to a non-negative image (the atlas irradiance
 /// E'), Chang et al. 2008 Sec. 3.2, Fig. 2:
-///  - MipIcdf (Fig. 2b): a pyramid of sums; a sample descends from the 1x1 top, choosing among the
-///  four
-///    children by their sums. Here the choice warps one 2-D point hierarchically (first left/right
-///    by column sums, then top/bottom within the chosen column, rescaling the point each time;
-///    Clarberg et al. 2005), so stratified or low-discrepancy inputs stay well distributed (the
-///    paper used independent random numbers per level).
+///  - MipIcdf (Fig. 2b): a pyramid of sums; a sample descends from the 1x1 top, choosing among
+///    the four children by their sums. Here the choice warps one 2-D point hierarchically (first
+///    left/right by column sums, then top/bottom within the chosen column, rescaling the point each
+///    time; Clarberg et al. 2005), so stratified or low-discrepancy inputs stay well distributed
+///    (the paper used independent random numbers per level).
 ///  - RowIcdf (Fig. 2a): marginal CDF over rows, then the conditional CDF within the row.
 /// Both return the texel and its probability p = value / sum, i.e. E'/(E'avg N texels) of Eq. 9,
 /// and a continuous position inside the texel. An all-zero image (light behind the object) samples

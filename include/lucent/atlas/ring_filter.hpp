@@ -46,6 +46,11 @@ struct RingFilter {
   std::vector<glm::dvec2> tapOffset;
   std::vector<glm::dvec3> tapFactor;
   int sampleCount() const { return rings * perRing + 1; }
+  /// True when the taps match the rings (makeRingFilter fills them; a hand-edited filter may not).
+  bool tapsPlaced() const {
+    return tapOffset.size() == std::size_t(rings) * std::size_t(perRing) &&
+           tapFactor.size() == tapOffset.size();
+  }
   /// The stratum of ring tap j (1..L).
   std::size_t tapStratum(std::size_t j) const { return j / std::size_t(perRing) + 1; }
 

@@ -110,6 +110,7 @@ class TranslucentShadowMap {
   template <class Visit>
   void forEachTap(const glm::dvec3& xo, const RingFilter& ring, Visit&& visit,
                   double turn = 0) const {
+    requireTaps(ring);
     const glm::dvec2 p = project(xo);
     const double ct = std::cos(turn), st = std::sin(turn);
     if (const std::size_t i = coveredTexel(p); i != kUncovered) visit(i, std::size_t(0), 1.0);
@@ -143,6 +144,7 @@ class TranslucentShadowMap {
   /// table to float rounding; no trigonometry or division per tap.
   glm::dvec3 filterTable(const glm::dvec3& xo, const RingFilter& ring,
                          const reference::PlanarRadialTable& table) const {
+    requireTaps(ring);
     thread_local TapBuffer taps;
     taps.reserve(ring.tapOffset.size());
     const glm::dvec2 p = project(xo);
@@ -201,6 +203,10 @@ class TranslucentShadowMap {
     }
   };
 
+  static void requireTaps(const RingFilter& ring) {
+    if (!ring.tapsPlaced())
+      throw std::logic_error("ring filter without its taps: build it with makeRingFilter");
+  }
   /// x_o's projection on the map's plane (mm along t and b from its centre).
   glm::dvec2 project(const glm::dvec3& xo) const {
     const glm::dvec3 rel = xo - mCenter;

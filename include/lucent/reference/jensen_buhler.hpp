@@ -62,9 +62,11 @@ class JensenBuhlerTree {
       }
       cluster.center = weight > 0 ? weighted / weight : 0.5 * (topology.lo + topology.hi);
     }
-    for (auto& a : mOrdered.array) a.resize(n);
-    for (std::size_t k = 0; k < n; ++k)
-      mOrdered.set(k, mPosition[mTree.order()[k]], mPower[mTree.order()[k]]);
+    if (std::is_same_v<T, float> && mDipole.isPolePair()) {  // treeSumVectorised's copy
+      for (auto& a : mOrdered.array) a.resize(n);
+      for (std::size_t k = 0; k < n; ++k)
+        mOrdered.set(k, mPosition[mTree.order()[k]], mPower[mTree.order()[k]]);
+    }
   }
 
   /// B(xo) by the hierarchical approximation (Eq. 3 of Chang et al. 2008), with the
