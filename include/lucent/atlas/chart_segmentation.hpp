@@ -1,9 +1,9 @@
 #pragma once
 /// @file chart_segmentation.hpp
-/// @brief Cuts a closed mesh into charts that project onto a plane without flipping: each chart
-/// grows over edge-adjacent triangles whose normals stay within a cone around the seed's normal.
-/// Projected along the cone axis, every triangle keeps its orientation and at least cos(angle) of
-/// its area, so the area ratio A_S/A_T of Chang et al. 2008 Eq. 6 stays within [1, 1/cos(angle)].
+/// @brief Cuts a closed mesh into charts that project onto a plane without flipping: each chart grows
+/// over edge-adjacent triangles whose normals stay within a cone around the seed's normal. Projected
+/// along the cone axis, every triangle keeps its orientation and at least cos(angle) of its area, so the
+/// area ratio A_S/A_T of Chang et al. 2008 Eq. 6 stays within [1, 1/cos(angle)].
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -20,8 +20,8 @@
 namespace lucent::atlas {
 
 struct ChartSet {
-  std::vector<int> chartOfTriangle;  ///< -1: degenerate triangle (no area, in no chart)
-  std::vector<glm::dvec3> axis;      ///< projection direction of each chart (unit)
+  std::vector<int> chartOfTriangle;     ///< -1: degenerate triangle (no area, in no chart)
+  std::vector<glm::dvec3> axis;         ///< projection direction of each chart (unit)
   int count() const { return int(axis.size()); }
 };
 
@@ -33,8 +33,7 @@ inline std::vector<std::vector<std::uint32_t>> triangleNeighbours(const scene::T
     return (std::uint64_t(std::min(a, b)) << 32) | std::uint64_t(std::max(a, b));
   };
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k)
-      byEdge[key(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3])].push_back(t);
+    for (int k = 0; k < 3; ++k) byEdge[key(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3])].push_back(t);
   std::vector<std::vector<std::uint32_t>> out(mesh.triangles.size());
   for (const auto& [edge, tris] : byEdge)
     for (std::uint32_t a : tris)
@@ -43,11 +42,9 @@ inline std::vector<std::vector<std::uint32_t>> triangleNeighbours(const scene::T
   return out;
 }
 
-/// @param maxAngleOfTriangle the cone half-angle (radians) each triangle may deviate from its
-/// chart's axis; per triangle so that charts found to overlap can be re-cut finer
-/// (texture_atlas.hpp).
-inline ChartSet segmentCharts(const scene::TriangleMesh& mesh,
-                              const std::vector<double>& maxAngleOfTriangle,
+/// @param maxAngleOfTriangle the cone half-angle (radians) each triangle may deviate from its chart's
+/// axis; per triangle so that charts found to overlap can be re-cut finer (texture_atlas.hpp).
+inline ChartSet segmentCharts(const scene::TriangleMesh& mesh, const std::vector<double>& maxAngleOfTriangle,
                               const std::vector<std::vector<std::uint32_t>>& neighbours) {
   const std::size_t n = mesh.triangles.size();
   ChartSet charts;
@@ -86,8 +83,8 @@ inline ChartSet segmentCharts(const scene::TriangleMesh& mesh,
   return charts;
 }
 
-/// Orthographic projection of a point onto the plane normal to `axis`, in mm, right-handed so that
-/// a triangle facing along the axis keeps its counter-clockwise order.
+/// Orthographic projection of a point onto the plane normal to `axis`, in mm, right-handed so that a
+/// triangle facing along the axis keeps its counter-clockwise order.
 inline glm::dvec2 projectToChart(const glm::dvec3& p, const glm::dvec3& axis) {
   glm::dvec3 t, b;
   util::orthonormalBasis(axis, t, b);

@@ -1,19 +1,17 @@
 #pragma once
 /// @file texture_atlas.hpp
 /// @brief The texture atlas of Chang et al. 2008 Sec. 2.2: every triangle gets texture
-/// coordinates, charts are packed without overlap with empty gutter texels between them, and each
-/// texel centre is owned by at most one triangle (the one a GPU rasteriser would draw there).
+/// coordinates, charts are packed without overlap with empty gutter texels between them, and each texel
+/// centre is owned by at most one triangle (the one a GPU rasteriser would draw there).
 ///
-/// Any parameterization is correct because irradiance is stored as E' = E A_S/A_T (Eq. 6-7). Here
-/// A_T is the triangle's rasterised texel count (times the texel area), so the atlas integral of E'
-/// equals the surface integral of E whatever the chart distortion or the texel size; a triangle too
-/// small to own a texel centre lends its area to the texel under its centroid ("guest"), displacing
-/// it by < 1 texel.
+/// Any parameterization is correct because irradiance is stored as E' = E A_S/A_T (Eq. 6-7). Here A_T is
+/// the triangle's rasterised texel count (times the texel area), so the atlas integral of E' equals the
+/// surface integral of E whatever the chart distortion or the texel size; a triangle too small to own
+/// a texel centre lends its area to the texel under its centroid ("guest"), displacing it by < 1 texel.
 ///
-/// Built-in parameterization: normal-cone charts (chart_segmentation.hpp), projected
-/// orthographically (area kept within cos of the cone angle), packed with one scale for all charts.
-/// Charts that fold onto themselves (detected as two triangles owning one texel) are cut again with
-/// half the angle.
+/// Built-in parameterization: normal-cone charts (chart_segmentation.hpp), projected orthographically
+/// (area kept within cos of the cone angle), packed with one scale for all charts. Charts that fold
+/// onto themselves (detected as two triangles owning one texel) are cut again with half the angle.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -31,44 +29,39 @@
 namespace lucent::atlas {
 
 struct AtlasOptions {
-  int resolution = 1024;          ///< texels per side
-  double maxNormalAngleDeg = 40;  ///< chart cone half-angle
-  int gutter = 2;     ///< empty texels around each chart (room for bilinear filtering on a GPU)
-  int maxRecuts = 8;  ///< rounds of re-cutting folded charts
+  int resolution = 1024;         ///< texels per side
+  double maxNormalAngleDeg = 40; ///< chart cone half-angle
+  int gutter = 2;                ///< empty texels around each chart (room for bilinear filtering on a GPU)
+  int maxRecuts = 8;             ///< rounds of re-cutting folded charts
 };
 
 struct AtlasStats {
   int charts = 0;
-  int recutRounds = 0;        ///< rounds needed until no chart folded
-  double coverage = 0;        ///< fraction of texels owned by a triangle
-  double texelsPerMm = 0;     ///< scale of the packing (built-in parameterization)
-  double areaStretchMin = 0;  ///< min over triangles of (A_T / A_S) / (total A_T / total A_S)
-  double areaStretchMax = 0;  ///< max of the same: 1 everywhere is perfectly area-preserving
-  std::size_t guestTriangles =
-      0;  ///< triangles owning no texel centre (carried by a neighbour texel)
-  double guestAreaFraction = 0;  ///< their share of the surface area
+  int recutRounds = 0;              ///< rounds needed until no chart folded
+  double coverage = 0;              ///< fraction of texels owned by a triangle
+  double texelsPerMm = 0;           ///< scale of the packing (built-in parameterization)
+  double areaStretchMin = 0;        ///< min over triangles of (A_T / A_S) / (total A_T / total A_S)
+  double areaStretchMax = 0;        ///< max of the same: 1 everywhere is perfectly area-preserving
+  std::size_t guestTriangles = 0;   ///< triangles owning no texel centre (carried by a neighbour texel)
+  double guestAreaFraction = 0;     ///< their share of the surface area
 };
 
 struct TextureAtlas {
   int resolution = 0;
-  std::vector<glm::dvec2>
-      uv;  ///< 3 per triangle, in texels: texel (x, y) spans [x, x+1) x [y, y+1)
+  std::vector<glm::dvec2> uv;               ///< 3 per triangle, in texels: texel (x, y) spans [x, x+1) x [y, y+1)
   std::vector<int> chartOfTriangle;         ///< -1 for degenerate triangles
   std::vector<std::int32_t> texelTriangle;  ///< resolution^2, row-major; owning triangle or -1
   std::vector<std::uint32_t> texelCount;    ///< per triangle: texels it owns (0 for a guest)
-  std::vector<std::int32_t> guestTexel;  ///< per triangle: the texel a guest is carried by, else -1
+  std::vector<std::int32_t> guestTexel;     ///< per triangle: the texel a guest is carried by, else -1
   AtlasStats stats;
 
-  std::size_t texelIndex(int x, int y) const {
-    return std::size_t(y) * std::size_t(resolution) + std::size_t(x);
-  }
+  std::size_t texelIndex(int x, int y) const { return std::size_t(y) * std::size_t(resolution) + std::size_t(x); }
 };
 
 namespace detail {
 
-/// 2-D orientation of p against the edge u -> v, computed in a canonical vertex order so that the
-/// two triangles sharing an edge get exactly opposite values (no texel is claimed twice by
-/// rounding).
+/// 2-D orientation of p against the edge u -> v, computed in a canonical vertex order so that the two
+/// triangles sharing an edge get exactly opposite values (no texel is claimed twice by rounding).
 inline double edgeFunction(const glm::dvec2& u, const glm::dvec2& v, const glm::dvec2& p) {
   const bool swapped = v.x < u.x || (v.x == u.x && v.y < u.y);
   const glm::dvec2& a = swapped ? v : u;
@@ -83,8 +76,7 @@ inline bool ownsEdge(const glm::dvec2& u, const glm::dvec2& v) {
   return dy > 0 || (dy == 0 && dx < 0);
 }
 
-inline bool insideTriangle(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c,
-                           const glm::dvec2& p) {
+inline bool insideTriangle(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c, const glm::dvec2& p) {
   const double w[3] = {edgeFunction(b, c, p), edgeFunction(c, a, p), edgeFunction(a, b, p)};
   const glm::dvec2* e[3][2] = {{&b, &c}, {&c, &a}, {&a, &b}};
   for (int k = 0; k < 3; ++k)
@@ -96,8 +88,8 @@ inline double signedArea2(const glm::dvec2& a, const glm::dvec2& b, const glm::d
   return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
 }
 
-/// Rasterises all triangles into atlas.texelTriangle; returns the charts in which two triangles
-/// claimed the same texel (the chart folds over itself or, for user UVs, islands overlap).
+/// Rasterises all triangles into atlas.texelTriangle; returns the charts in which two triangles claimed
+/// the same texel (the chart folds over itself or, for user UVs, islands overlap).
 inline std::vector<int> rasterize(const scene::TriangleMesh& mesh, TextureAtlas& atlas) {
   const int res = atlas.resolution;
   atlas.texelTriangle.assign(std::size_t(res) * res, -1);
@@ -107,8 +99,7 @@ inline std::vector<int> rasterize(const scene::TriangleMesh& mesh, TextureAtlas&
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     if (atlas.chartOfTriangle[t] < 0) continue;
     glm::dvec2 a = atlas.uv[3 * t], b = atlas.uv[3 * t + 1], c = atlas.uv[3 * t + 2];
-    if (signedArea2(a, b, c) < 0)
-      std::swap(b, c);  // user UVs may be mirrored; the fill rule needs CCW
+    if (signedArea2(a, b, c) < 0) std::swap(b, c);  // user UVs may be mirrored; the fill rule needs CCW
     const int x0 = std::max(0, int(std::floor(std::min({a.x, b.x, c.x}) - 0.5)));
     const int x1 = std::min(res - 1, int(std::ceil(std::max({a.x, b.x, c.x}) - 0.5)));
     const int y0 = std::max(0, int(std::floor(std::min({a.y, b.y, c.y}) - 0.5)));
@@ -193,15 +184,13 @@ inline void alignChartsToPrincipalAxes(const ChartSet& charts, std::vector<glm::
     const int c = charts.chartOfTriangle[i / 3];
     if (c < 0) continue;
     const glm::dvec2 d = projected[i] - mean[std::size_t(c)];
-    sxx[std::size_t(c)] += d.x * d.x, sxy[std::size_t(c)] += d.x * d.y,
-        syy[std::size_t(c)] += d.y * d.y;
+    sxx[std::size_t(c)] += d.x * d.x, sxy[std::size_t(c)] += d.x * d.y, syy[std::size_t(c)] += d.y * d.y;
   }
   for (std::size_t i = 0; i < projected.size(); ++i) {
     const int c = charts.chartOfTriangle[i / 3];
     if (c < 0) continue;
     const std::size_t k = std::size_t(c);
-    const double angle =
-        0.5 * std::atan2(2 * sxy[k], sxx[k] - syy[k]);  // major axis -> x (a rotation: keeps CCW)
+    const double angle = 0.5 * std::atan2(2 * sxy[k], sxx[k] - syy[k]);  // major axis -> x (a rotation: keeps CCW)
     const double co = std::cos(angle), si = std::sin(angle);
     const glm::dvec2 d = projected[i] - mean[k];
     projected[i] = {co * d.x + si * d.y, -si * d.x + co * d.y};
@@ -209,14 +198,11 @@ inline void alignChartsToPrincipalAxes(const ChartSet& charts, std::vector<glm::
 }
 
 /// Lays the charts out at `texelsPerMm`; false when they do not fit.
-inline bool layoutCharts(const scene::TriangleMesh& mesh, const ChartSet& charts, int gutter,
-                         double texelsPerMm, const std::vector<glm::dvec2>& projected,
-                         TextureAtlas& atlas) {
+inline bool layoutCharts(const scene::TriangleMesh& mesh, const ChartSet& charts, int gutter, double texelsPerMm,
+                         const std::vector<glm::dvec2>& projected, TextureAtlas& atlas) {
   const int n = charts.count();
-  std::vector<glm::dvec2> lo(static_cast<std::size_t>(n),
-                             glm::dvec2(std::numeric_limits<double>::infinity()));
-  std::vector<glm::dvec2> hi(static_cast<std::size_t>(n),
-                             glm::dvec2(-std::numeric_limits<double>::infinity()));
+  std::vector<glm::dvec2> lo(static_cast<std::size_t>(n), glm::dvec2(std::numeric_limits<double>::infinity()));
+  std::vector<glm::dvec2> hi(static_cast<std::size_t>(n), glm::dvec2(-std::numeric_limits<double>::infinity()));
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const int c = charts.chartOfTriangle[t];
     if (c < 0) continue;
@@ -238,8 +224,7 @@ inline bool layoutCharts(const scene::TriangleMesh& mesh, const ChartSet& charts
     const int c = charts.chartOfTriangle[t];
     if (c < 0) continue;
     const glm::dvec2 origin(corners[std::size_t(c)].x + gutter, corners[std::size_t(c)].y + gutter);
-    for (int k = 0; k < 3; ++k)
-      atlas.uv[3 * t + k] = origin + (projected[3 * t + k] - lo[std::size_t(c)]) * texelsPerMm;
+    for (int k = 0; k < 3; ++k) atlas.uv[3 * t + k] = origin + (projected[3 * t + k] - lo[std::size_t(c)]) * texelsPerMm;
   }
   return true;
 }
@@ -247,16 +232,13 @@ inline bool layoutCharts(const scene::TriangleMesh& mesh, const ChartSet& charts
 }  // namespace detail
 
 /// Built-in parameterization of any triangle mesh (closed or not) into a packed atlas.
-inline TextureAtlas buildTextureAtlas(const scene::TriangleMesh& mesh,
-                                      const AtlasOptions& options = {}) {
+inline TextureAtlas buildTextureAtlas(const scene::TriangleMesh& mesh, const AtlasOptions& options = {}) {
   if (options.resolution < 8 || options.resolution > 16384)
-    throw std::invalid_argument("atlas resolution must be in [8, 16384], not " +
-                                std::to_string(options.resolution));
+    throw std::invalid_argument("atlas resolution must be in [8, 16384], not " + std::to_string(options.resolution));
   if (!(options.maxNormalAngleDeg > 0 && options.maxNormalAngleDeg < 90))
     throw std::invalid_argument("chart cone angle must be in (0, 90) degrees");
   const auto neighbours = triangleNeighbours(mesh);
-  std::vector<double> maxAngle(mesh.triangles.size(),
-                               options.maxNormalAngleDeg * optics::kPi / 180.0);
+  std::vector<double> maxAngle(mesh.triangles.size(), options.maxNormalAngleDeg * optics::kPi / 180.0);
   TextureAtlas atlas;
   atlas.resolution = options.resolution;
   for (int round = 0;; ++round) {
@@ -267,23 +249,18 @@ inline TextureAtlas buildTextureAtlas(const scene::TriangleMesh& mesh,
       const int c = charts.chartOfTriangle[t];
       if (c < 0) continue;
       for (int k = 0; k < 3; ++k)
-        projected[3 * t + k] = projectToChart(glm::dvec3(mesh.positions[mesh.triangles[t][k]]),
-                                              charts.axis[std::size_t(c)]);
-      projectedArea +=
-          0.5 * detail::signedArea2(projected[3 * t], projected[3 * t + 1], projected[3 * t + 2]);
+        projected[3 * t + k] = projectToChart(glm::dvec3(mesh.positions[mesh.triangles[t][k]]), charts.axis[std::size_t(c)]);
+      projectedArea += 0.5 * detail::signedArea2(projected[3 * t], projected[3 * t + 1], projected[3 * t + 2]);
     }
     detail::alignChartsToPrincipalAxes(charts, projected);
-    // The largest scale at which the charts fit: bisect between a scale that fits and one that
-    // cannot (the charts' area alone would exceed the atlas).
+    // The largest scale at which the charts fit: bisect between a scale that fits and one that cannot
+    // (the charts' area alone would exceed the atlas).
     double hi = options.resolution / std::sqrt(std::max(projectedArea, 1e-300));
     double lo = hi;
-    for (int i = 0;
-         i < 64 && !detail::layoutCharts(mesh, charts, options.gutter, lo, projected, atlas); ++i)
-      lo *= 0.5;
+    for (int i = 0; i < 64 && !detail::layoutCharts(mesh, charts, options.gutter, lo, projected, atlas); ++i) lo *= 0.5;
     if (!detail::layoutCharts(mesh, charts, options.gutter, lo, projected, atlas))
-      throw std::invalid_argument("atlas: " + std::to_string(charts.count()) +
-                                  " charts do not fit into " + std::to_string(options.resolution) +
-                                  "^2 texels even with their gutters; raise the atlas resolution");
+      throw std::invalid_argument("atlas: " + std::to_string(charts.count()) + " charts do not fit into " +
+                                  std::to_string(options.resolution) + "^2 texels even with their gutters; raise the atlas resolution");
     for (int i = 0; i < 20; ++i) {
       const double mid = std::sqrt(lo * hi);
       (detail::layoutCharts(mesh, charts, options.gutter, mid, projected, atlas) ? lo : hi) = mid;
@@ -297,14 +274,12 @@ inline TextureAtlas buildTextureAtlas(const scene::TriangleMesh& mesh,
     const std::vector<int> folded = detail::rasterize(mesh, atlas);
     if (folded.empty() || round >= options.maxRecuts) {
       if (!folded.empty())
-        throw std::invalid_argument("atlas: " + std::to_string(folded.size()) +
-                                    " charts still fold after " + std::to_string(round) +
-                                    " re-cuts; check the mesh for self-intersections");
+        throw std::invalid_argument("atlas: " + std::to_string(folded.size()) + " charts still fold after " +
+                                    std::to_string(round) + " re-cuts; check the mesh for self-intersections");
       break;
     }
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-      if (std::binary_search(folded.begin(), folded.end(), atlas.chartOfTriangle[t]))
-        maxAngle[t] *= 0.5;
+      if (std::binary_search(folded.begin(), folded.end(), atlas.chartOfTriangle[t])) maxAngle[t] *= 0.5;
   }
   detail::placeGuests(mesh, atlas);
   detail::computeStats(mesh, atlas);
@@ -313,29 +288,25 @@ inline TextureAtlas buildTextureAtlas(const scene::TriangleMesh& mesh,
 
 /// An atlas from the mesh's own texture coordinates (3 per triangle, in [0, 1]^2). Overlapping UV
 /// islands (mirrored or shared texture) would sum two surfaces' irradiance in one texel: refused.
-inline TextureAtlas atlasFromUvs(const scene::TriangleMesh& mesh,
-                                 const std::vector<glm::dvec2>& cornerUv, int resolution) {
+inline TextureAtlas atlasFromUvs(const scene::TriangleMesh& mesh, const std::vector<glm::dvec2>& cornerUv, int resolution) {
   if (cornerUv.size() != 3 * mesh.triangles.size())
     throw std::invalid_argument("atlas: expected 3 texture coordinates per triangle (" +
-                                std::to_string(3 * mesh.triangles.size()) + "), got " +
-                                std::to_string(cornerUv.size()));
+                                std::to_string(3 * mesh.triangles.size()) + "), got " + std::to_string(cornerUv.size()));
   TextureAtlas atlas;
   atlas.resolution = resolution;
   atlas.uv.resize(cornerUv.size());
   atlas.chartOfTriangle.assign(mesh.triangles.size(), 0);
   for (std::size_t i = 0; i < cornerUv.size(); ++i) {
     if (!(cornerUv[i].x >= 0 && cornerUv[i].x <= 1 && cornerUv[i].y >= 0 && cornerUv[i].y <= 1))
-      throw std::invalid_argument("atlas: texture coordinate " + std::to_string(i) +
-                                  " lies outside [0, 1]^2; "
+      throw std::invalid_argument("atlas: texture coordinate " + std::to_string(i) + " lies outside [0, 1]^2; "
                                   "use the built-in parameterization instead");
     atlas.uv[i] = cornerUv[i] * double(resolution);
   }
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     if (!(mesh.triangleArea(t) > 0)) atlas.chartOfTriangle[t] = -1;
   if (!detail::rasterize(mesh, atlas).empty())
-    throw std::invalid_argument(
-        "atlas: the mesh's texture coordinates overlap (two triangles share texels); "
-        "use the built-in parameterization instead");
+    throw std::invalid_argument("atlas: the mesh's texture coordinates overlap (two triangles share texels); "
+                                "use the built-in parameterization instead");
   atlas.stats.charts = 1;
   detail::placeGuests(mesh, atlas);
   detail::computeStats(mesh, atlas);
