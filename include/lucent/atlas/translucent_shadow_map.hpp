@@ -145,8 +145,8 @@ class TranslucentShadowMap {
   glm::dvec3 filterTable(const glm::dvec3& xo, const RingFilter& ring,
                          const reference::PlanarRadialTable& table) const {
     requireTaps(ring);
-    thread_local TapBuffer taps;
-    taps.reserve(ring.tapOffset.size());
+    thread_local reference::GatheredSamples taps;
+    taps.fit(ring.tapOffset.size());
     const glm::dvec2 p = project(xo);
     glm::dvec3 sum(0);
     if (const std::size_t i = coveredTexel(p); i != kUncovered)
@@ -162,15 +162,10 @@ class TranslucentShadowMap {
       const std::size_t i = std::size_t(fy) * std::size_t(mResolution) + std::size_t(fx);
       if (!mValid[i]) continue;
       const MapTexel& t = mTexels[i];
-      const glm::vec3 w = glm::vec3(ring.tapFactor[j]) * t.density;
-      taps.x[n] = t.position.x, taps.y[n] = t.position.y, taps.z[n] = t.position.z;
-      taps.w0[n] = w.x, taps.w1[n] = w.y, taps.w2[n] = w.z;
-      ++n;
+      taps.set(n++, t.position, glm::vec3(ring.tapFactor[j]) * t.density);
     }
     double ring3[3];
-    reference::radialTableSum({taps.x.data(), taps.y.data(), taps.z.data(), taps.w0.data(),
-                               taps.w1.data(), taps.w2.data(), n},
-                              table, float(xo.x), float(xo.y), float(xo.z), ring3);
+    reference::radialTableSum(taps.view(n), table, float(xo.x), float(xo.y), float(xo.z), ring3);
     return sum + glm::dvec3(ring3[0], ring3[1], ring3[2]);
   }
 
@@ -193,15 +188,6 @@ class TranslucentShadowMap {
 
  private:
   static constexpr std::size_t kUncovered = std::numeric_limits<std::size_t>::max();
-
-  /// Float arrays of the taps that land on covered texels (structure of arrays for the kernel).
-  struct TapBuffer {
-    std::vector<float> x, y, z, w0, w1, w2;
-    void reserve(std::size_t n) {
-      for (auto* v : {&x, &y, &z, &w0, &w1, &w2})
-        if (v->size() < n) v->resize(n);
-    }
-  };
 
   static void requireTaps(const RingFilter& ring) {
     if (!ring.tapsPlaced())

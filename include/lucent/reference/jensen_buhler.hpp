@@ -105,7 +105,7 @@ class JensenBuhlerTree {
   /// techniques it is the baseline of. A leaf's samples are one range of arrays kept in tree
   /// order, copied whole.
   glm::dvec3 treeSumVectorised(const glm::dvec3& xo) const {
-    thread_local SourceArrays gathered;
+    thread_local GatheredSamples gathered;
     std::size_t n = 0;
     const std::size_t terms = traverse(
         xo,
@@ -115,16 +115,14 @@ class JensenBuhlerTree {
         },
         [&](std::uint32_t begin, std::uint32_t end) {
           gathered.fit(n + (end - begin));
-          for (int a = 0; a < SourceArrays::kArrays; ++a)
+          for (int a = 0; a < GatheredSamples::kArrays; ++a)
             std::copy(mOrdered.array[a].begin() + begin, mOrdered.array[a].begin() + end,
                       gathered.array[a].begin() + std::ptrdiff_t(n));
           n += end - begin;
         });
     mTerms->fetch_add(terms, std::memory_order_relaxed);
-    const auto& g = gathered.array;
     double out[3];
-    rdSumFloat({g[0].data(), g[1].data(), g[2].data(), g[3].data(), g[4].data(), g[5].data(), n},
-               mKernel, float(xo.x), float(xo.y), float(xo.z), out);
+    rdSumFloat(gathered.view(n), mKernel, float(xo.x), float(xo.y), float(xo.z), out);
     return {out[0], out[1], out[2]};
   }
 
@@ -143,20 +141,6 @@ class JensenBuhlerTree {
   struct Cluster {
     glm::dvec3 center{0}, power{0};
     double area = 0;
-  };
-
-  /// Sources as float arrays x, y, z, w0, w1, w2 (the kernel's layout).
-  struct SourceArrays {
-    static constexpr int kArrays = 6;
-    std::vector<float> array[kArrays];
-    void fit(std::size_t n) {
-      if (array[0].size() < n)
-        for (auto& a : array) a.resize(std::max<std::size_t>(2 * n, 1024));
-    }
-    void set(std::size_t i, const glm::dvec3& x, const glm::dvec3& w) {
-      array[0][i] = float(x.x), array[1][i] = float(x.y), array[2][i] = float(x.z);
-      array[3][i] = float(w.x), array[4][i] = float(w.y), array[5][i] = float(w.z);
-    }
   };
 
   /// Descends the tree for x_o: onNode(cluster) for a node small as seen from x_o (the file
@@ -196,7 +180,7 @@ class JensenBuhlerTree {
   std::vector<double> mArea;
   PointOctree mTree;
   std::vector<Cluster> mNodes;  ///< per node of mTree
-  SourceArrays mOrdered;        ///< the samples in tree order, for treeSumVectorised
+  GatheredSamples mOrdered;     ///< the samples in tree order, for treeSumVectorised
   RdKernelConstants mKernel =
       mDipole.isPolePair() ? RdKernelConstants::from(mDipole) : RdKernelConstants{};
   /// Behind a pointer: the tree stays movable.

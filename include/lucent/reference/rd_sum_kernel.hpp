@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 #include "../optics/constants.hpp"
 #include "../optics/fast_exp.hpp"
@@ -60,6 +61,33 @@ LUCENT_ALWAYS_INLINE float rdChannel(float r2, const RdKernelConstants& k, int c
 struct RdKernelSamples {
   const float *x, *y, *z, *w0, *w1, *w2;
   std::size_t n;
+};
+
+/// Growable float arrays in the kernels' layout, for sums whose terms are gathered per point (the
+/// octree's sources, the ring filter's taps). Growing keeps what was gathered.
+struct GatheredSamples {
+  static constexpr int kArrays = 6;
+  std::vector<float> array[kArrays];  ///< x, y, z, w0, w1, w2
+
+  void fit(std::size_t n) {
+    if (array[0].size() < n)
+      for (auto& a : array) a.resize(std::max<std::size_t>(2 * n, 1024));
+  }
+  template <class Position, class Weight>
+  void set(std::size_t i, const Position& x, const Weight& w) {
+    array[0][i] = float(x.x), array[1][i] = float(x.y), array[2][i] = float(x.z);
+    array[3][i] = float(w.x), array[4][i] = float(w.y), array[5][i] = float(w.z);
+  }
+  /// The first n entries, as the kernels take them.
+  RdKernelSamples view(std::size_t n) const {
+    return {array[0].data(),
+            array[1].data(),
+            array[2].data(),
+            array[3].data(),
+            array[4].data(),
+            array[5].data(),
+            n};
+  }
 };
 
 namespace detail {
