@@ -1,10 +1,11 @@
 // A VTK program turns on translucent rendering with one render pass: vtkLucentPass around VTK's
 // usual render steps. Every opaque surface becomes skin (or another measured material), lit by the
 // scene's light; here the light is behind the object, so thin parts glow. --technique picks the GPU
-// twin (tsis, the default, or taulut), --knob sets its knobs; with --sweep it prints the frame time
-// over the technique's own default sweep (`lucent techniques` lists it), the accuracy / time knob
-// of the GPU path. --shape cube-cavity renders the cube with a spherical cavity of Mochida et al.
-// 2016.
+// twin (tsis, the default, hybrid, taulut or diffuse-brdf), --knob sets its knobs; with --sweep it
+// prints the frame time over the technique's own default sweep (`lucent techniques` lists it) or
+// the given one, the accuracy / time knob of the GPU path, with the per-pixel sum's rate and a
+// linear fit of the frame time. --shape cube-cavity renders the cube with a spherical cavity of
+// Mochida et al. 2016.
 //
 //   build/examples/vtk_translucent_pass [OUT.png] [--size PX] [--technique NAME] [--material NAME]
 //       [--knob NAME=VALUE]... [--shape torus|cube-cavity] [--size-mm MM] [--sweep] [--frames N]
@@ -124,6 +125,60 @@ double frameMs(vtkRenderWindow* window, vtkRenderer* renderer, int frames) {
              .count() /
          frames;
 }
+
+/// The "OpenGL renderer string" line of the window's capabilities (llvmpipe, or the GPU).
+std::string glRenderer(vtkRenderWindow* window) {
+  const std::string caps = window->ReportCapabilities();
+  const auto at = caps.find("OpenGL renderer string");
+  return at == std::string::npos ? "OpenGL renderer unknown"
+                                 : caps.substr(at, caps.find('\n', at) - at);
+}
+
+/// Pixels the pass shaded translucent in one frame (a frame kept for the count, then not).
+std::size_t translucentPixels(vtkRenderWindow* window, vtkLucentPass* pass) {
+  pass->KeepFrameOn();
+  window->Render();
+  pass->KeepFrameOff();
+  int width = 0, height = 0;
+  std::vector<float> radiance, position, normal;
+  if (!pass->GetLastFrame(width, height, radiance, position, normal)) return 0;
+  std::size_t n = 0;
+  for (std::size_t i = 3; i < radiance.size(); i += 4) n += radiance[i] > 0;
+  return n;
+}
+
+/// Frame time against a numeric knob: ms = fixed + slope x value by least squares (the per-pixel
+/// sum grows with samples; the atlas, sampling and composite do not).
+void printFit(const std::vector<std::pair<double, double>>& valueMs, const std::string& knob) {
+  if (valueMs.size() < 2) return;
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const double n = double(valueMs.size());
+  for (const auto& [x, y] : valueMs) sx += x, sy += y, sxx += x * x, sxy += x * y;
+  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  std::printf("fit: ms/frame = %.2f + %.5f x %s\n", (sy - slope * sx) / n, slope, knob.c_str());
+}
+
+/// One sweep: ms per frame at each value and, for samples, the per-pixel sum's rate (pixel-sample
+/// terms per second over the translucent pixels).
+void runSweep(vtkRenderWindow* window, vtkRenderer* renderer, vtkLucentPass* lucent,
+              const std::string& technique, const lucent::technique::Sweep& sweep, int frames) {
+  const std::size_t pixels = translucentPixels(window, lucent);
+  std::printf("%s over %zu translucent pixels\n", technique.c_str(), pixels);
+  std::printf("%14s %12s %12s %16s\n", sweep.knob.c_str(), "ms/frame", "frames/s",
+              "pixel-samples/s");
+  std::vector<std::pair<double, double>> valueMs;
+  for (const auto& value : sweep.values) {
+    const std::string name = technique + "." + sweep.knob;
+    lucent->SetKnob(name.c_str(), value.c_str());
+    const double ms = frameMs(window, renderer, frames);
+    const std::string used = lucent->GetKnob(name.c_str());
+    const double x = std::atof(used.c_str());
+    valueMs.emplace_back(x, ms);
+    const double rate = sweep.knob == "samples" ? double(pixels) * x / (ms / 1000) : 0.0;
+    std::printf("%14s %12.1f %12.2f %16.3g\n", used.c_str(), ms, 1000.0 / ms, rate);
+  }
+  printFit(valueMs, sweep.knob);
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -195,15 +250,8 @@ int main(int argc, char** argv) {
       for (std::string v; std::getline(values, v, ',');) given.values.push_back(v);
       sweeps = {given};
     }
-    for (const auto& sweep : sweeps) {
-      std::printf("%14s %12s %12s\n", sweep.knob.c_str(), "ms/frame", "frames/s");
-      for (const auto& value : sweep.values) {
-        lucent->SetKnob((t.name + "." + sweep.knob).c_str(), value.c_str());
-        const double ms = frameMs(window, renderer, o.frames);
-        std::printf("%14s %12.1f %12.2f\n",
-                    lucent->GetKnob((t.name + "." + sweep.knob).c_str()).c_str(), ms, 1000.0 / ms);
-      }
-    }
+    std::printf("%s\n", glRenderer(window).c_str());
+    for (const auto& sweep : sweeps) runSweep(window, renderer, lucent, t.name, sweep, o.frames);
   }
   return 0;
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <doctest/doctest.h>
@@ -63,6 +64,11 @@ struct PassScene {
     return std::vector<unsigned char>(rgb->GetPointer(0), rgb->GetPointer(0) + 3 * width * height);
   }
 };
+
+/// The hard cases of a twin: zero absorption (spectralon), a 1 um and a 1 nm object, a 1 m one
+/// (material, diagonal in mm).
+inline constexpr std::pair<const char*, double> kHardMaterialSizes[] = {
+    {"spectralon", 20.0}, {"skin1", 1e-3}, {"marble", 1e3}, {"ketchup", 1e-6}};
 
 inline vtkSmartPointer<vtkPolyData> sphere(double radius, int resolution) {
   vtkNew<vtkSphereSource> source;

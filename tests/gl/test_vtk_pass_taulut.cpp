@@ -151,10 +151,7 @@ TEST_CASE("vtkLucentPass taulut: hard cases stay finite, bad knobs are reported,
   scene.pass->SetTechnique("taulut");
   setKnobs(scene.pass, {{"voxels", "10"}, {"map", "128"}});
   SUBCASE("zero absorption, a 1 um and a 1 m object, one voxel a side too few") {
-    for (const auto& [material, size] : {std::pair<const char*, double>{"spectralon", 20.0},
-                                         {"skin1", 1e-3},
-                                         {"marble", 1e3},
-                                         {"ketchup", 1e-6}}) {
+    for (const auto& [material, size] : lucent_test::kHardMaterialSizes) {
       scene.pass->SetMaterial(material);
       scene.pass->SetSizeMm(size);
       scene.render();

@@ -28,8 +28,19 @@ inline std::string withSharedGlsl(const char* stage) {
                                std::string(lucent::glsl::kConstants) + lucent::glsl::kOpticsGlsl);
   vtkShaderProgram::Substitute(source, "//LUCENT::Light", lucent::glsl::kLightGlsl);
   vtkShaderProgram::Substitute(source, "//LUCENT::Voxel", lucent::glsl::kVoxelGlsl);
+  vtkShaderProgram::Substitute(source, "//LUCENT::RingFilter", lucent::glsl::kRingFilterGlsl);
   vtkShaderProgram::Substitute(source, "//LUCENT::Display", lucent::glsl::kDisplayGlsl);
   return source;
+}
+
+/// shaders/light_view_map.frag tagging covered texels 1 (the hybrid's translucent shadow map) or
+/// 1 + their surface voxel's number (taulut's voxel-number map).
+inline std::string lightViewMapShader(bool voxelNumber) {
+  std::string source = lucent::glsl::kLightViewMapFrag;
+  vtkShaderProgram::Substitute(
+      source, "//LUCENT::MapVariant",
+      voxelNumber ? "#define LUCENT_VOXEL_NUMBER 1" : "#define LUCENT_VOXEL_NUMBER 0");
+  return withSharedGlsl(source.c_str());
 }
 
 /// Every texture of the pass is read texel for texel: nearest filtering, clamped at the edges.
@@ -69,6 +80,40 @@ inline bool uploadRows(vtkTextureObject* texture, std::vector<float> rgba, int r
   rgba.resize(width * rows * 4, 0.0f);
   return texture->Create2DFromRaw(unsigned(width), unsigned(rows), 4, VTK_FLOAT, rgba.data());
 }
+
+/// Texels a row of a 1-D table may take on this GPU (kMaxRowTexels, or the GL limit if lower).
+inline int rowLimit(vtkOpenGLRenderWindow* window) {
+  const int glLimit = vtkTextureObject::GetMaximumTextureSize(window);  // -1 without a context
+  return glLimit > 0 ? std::min(kMaxRowTexels, glLimit) : kMaxRowTexels;
+}
+
+/// A table on the nodes r_i = rMax (i / (n - 1))^2 (optics::RadialTable's, the ring filter's
+/// cumulative grid) as rows of a texture, and the uniforms of LucentRadialTable
+/// (shaders/optics.glsl) that read it.
+struct RowTable {
+  int nodes = 0, perRow = 1;
+  float rMax = 1;
+  /// Uploads `values` (RGB per node); false when the texture cannot hold them.
+  template <class Rgb>
+  bool upload(vtkOpenGLRenderWindow* window, vtkTextureObject* texture,
+              const std::vector<Rgb>& values, double rMaxMm) {
+    std::vector<float> rgba;
+    rgba.reserve(4 * values.size());
+    for (const auto& v : values)
+      rgba.insert(rgba.end(), {float(v[0]), float(v[1]), float(v[2]), 0.0f});
+    const int limit = rowLimit(window);
+    nodes = int(values.size());
+    perRow = std::max(1, std::min(nodes, limit));
+    rMax = float(rMaxMm);
+    return uploadRows(texture, std::move(rgba), limit);
+  }
+  /// Sets `name`.nodes, .perRow and .rMax.
+  void setUniforms(vtkShaderProgram* program, const std::string& name) const {
+    program->SetUniformi((name + ".nodes").c_str(), nodes);
+    program->SetUniformi((name + ".perRow").c_str(), perRow);
+    program->SetUniformf((name + ".rMax").c_str(), rMax);
+  }
+};
 
 inline vtkSmartPointer<vtkOpenGLFramebufferObject> newFramebuffer(vtkOpenGLRenderWindow* window) {
   auto f = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();

@@ -41,6 +41,7 @@
 #include "lucentPolyDataMesh.h"
 #include "lucentSmpFor.h"
 #include "lucent_glsl.h"
+#include "vtkLucentLocalTerm.h"
 #include "vtkLucentProfile.h"
 #include "vtkLucentSurface.h"
 #include "vtkLucentTauLut.h"
@@ -157,13 +158,15 @@ std::vector<lt::Inclusion> innerBodiesWithin(const vtkLucentSurface& surface,
   }
   return out;
 }
-/// Stage 3's fragment shader, reading the profile's table or a pole pair's closed form.
-std::string shadeVariant(bool closedForm) {
-  std::string source = withSharedGlsl(lucent::glsl::kTsisShadeFrag);
-  vtkShaderProgram::Substitute(
-      source, "//LUCENT::ProfileForm",
-      closedForm ? "#define LUCENT_CLOSED_FORM 1" : "#define LUCENT_CLOSED_FORM 0");
-  return source;
+/// Stage 3's fragment shader, reading the profile's table or a pole pair's closed form, with the
+/// hybrid's local term or without.
+std::string shadeVariant(bool closedForm, bool localTerm) {
+  std::string source = lucent::glsl::kTsisShadeFrag;
+  vtkShaderProgram::Substitute(source, "//LUCENT::ProfileForm",
+                               std::string("#define LUCENT_CLOSED_FORM ") +
+                                   (closedForm ? "1" : "0") + "\n#define LUCENT_LOCAL_TERM " +
+                                   (localTerm ? "1" : "0"));
+  return withSharedGlsl(source.c_str());
 }
 }  // namespace
 
@@ -179,11 +182,13 @@ struct vtkLucentPass::Internals {
   vtkOpenGLQuadHelper* samplesQuad = nullptr;
   vtkOpenGLQuadHelper* compositeQuad = nullptr;
   std::string lightDepthVs, lightDepthFs, atlasVs, atlasFs, shadeVs;
-  std::string shadeFs[2];  ///< stage 3 with the profile's table [0], or in closed form [1]
+  std::string shadeFs[2];     ///< stage 3 with the profile's table [0], or in closed form [1]
+  std::string hybridShadeFs;  ///< stage 3 with the table of Rd Wg and the local term
   std::string tauShadeFs, diffuseShadeFs;
   std::map<vtkActor*, vtkSmartPointer<vtkLucentSurface>> surfaces;
   std::map<const vtkLucentSurface*, vtkSmartPointer<vtkLucentTauLut>> tauLuts;    ///< taulut's twin
   std::map<const vtkLucentSurface*, vtkSmartPointer<vtkLucentProfile>> profiles;  ///< tsis's Rd
+  std::map<const vtkLucentSurface*, vtkSmartPointer<vtkLucentLocalTerm>> localTerms;  ///< hybrid
   /// Per surface, the build, material and knobs its range was last checked for: the check copies
   /// the mesh, so it runs when one of them changes, not every frame.
   std::map<const vtkLucentSurface*, std::string> rangeChecked;
@@ -200,7 +205,8 @@ struct vtkLucentPass::Internals {
         atlasVs(lucent::glsl::kAtlasIrradianceVert),
         atlasFs(withSharedGlsl(lucent::glsl::kAtlasIrradianceFrag)),
         shadeVs(lucent::glsl::kTsisShadeVert),
-        shadeFs{shadeVariant(false), shadeVariant(true)},
+        shadeFs{shadeVariant(false, false), shadeVariant(true, false)},
+        hybridShadeFs(shadeVariant(false, true)),
         tauShadeFs(withSharedGlsl(lucent::glsl::kTaulutShadeFrag)),
         diffuseShadeFs(withSharedGlsl(lucent::glsl::kDiffuseBrdfShadeFrag)) {}
 };
@@ -213,15 +219,17 @@ struct vtkLucentPass::FrameSetup {
   int samples = 0, samplesPerRow = 0;  ///< tsis's, of the actor being shaded
   vtkMatrix4x4* worldToClip = nullptr;
   float camera[3] = {};
-  glm::mat4 worldToLight{1.0f};  ///< of the actor being shaded
+  glm::mat4 worldToLight{1.0f};             ///< of the actor being shaded
+  vtkLucentLocalTerm* localTerm = nullptr;  ///< the hybrid's, of the actor being shaded
 };
 
-vtkLucentPass::vtkLucentPass() : Impl(new Internals) { this->RefreshTsisKnobs(); }
+vtkLucentPass::vtkLucentPass() : Impl(new Internals) { this->RefreshAtlasKnobs(); }
 
 void vtkLucentPass::SetTechnique(const char* name) {
   const std::string value = name ? name : "";
   if (value == this->Technique) return;
   this->Technique = value;
+  this->RefreshAtlasKnobs();
   this->Modified();
 }
 
@@ -237,7 +245,7 @@ void vtkLucentPass::SetKnob(const char* qualifiedName, const char* value) {
   auto [it, added] = this->Knobs.emplace(qualifiedName, v);
   if (!added && it->second == v) return;
   it->second = v;
-  this->RefreshTsisKnobs();
+  this->RefreshAtlasKnobs();
   this->Modified();
 }
 void vtkLucentPass::SetKnobInteger(const char* qualifiedName, int value) {
@@ -272,14 +280,19 @@ lt::KnobValues vtkLucentPass::TwinValues(const lt::Technique& t) const {
   return t.values(given);
 }
 
-/// tsis's stages read their two knobs as members.
-void vtkLucentPass::RefreshTsisKnobs() {
-  const lt::Technique& tsis = *twinNamed("tsis");
+/// The atlas's stages read two knobs as members: the pass's technique's when its twin samples the
+/// atlas (tsis, hybrid), else tsis's.
+void vtkLucentPass::RefreshAtlasKnobs() {
+  const lt::Technique* t = twinNamed(this->Technique);
+  const auto& twinKnobs = t ? t->capabilities.gpuTwinKnobs : std::vector<lt::TwinKnob>{};
+  if (std::none_of(twinKnobs.begin(), twinKnobs.end(),
+                   [](const lt::TwinKnob& k) { return k.knob == "samples"; }))
+    t = twinNamed("tsis");
   lt::KnobValues values;
   try {
-    values = this->TwinValues(tsis);
+    values = this->TwinValues(*t);
   } catch (const std::exception&) {
-    values = tsis.values();  // a malformed number: the defaults, reported when drawn
+    values = t->values();  // a malformed number: the defaults, reported when drawn
   }
   this->Samples = int(values.integer("samples"));
   this->AtlasResolution = int(values.integer("atlas-resolution"));
@@ -579,8 +592,10 @@ bool vtkLucentPass::DrawImportanceSamples(vtkOpenGLRenderWindow* window, const F
 bool vtkLucentPass::ShadeSurface(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
                                  const FrameSetup& frame, int width, int height) {
   Internals& I = *this->Impl;
-  vtkShaderProgram* program = this->BeginPerPixelStage(
-      window, I.shadeFs[I.profiles.at(surface)->IsClosedForm() ? 1 : 0], width, height);
+  vtkLucentProfile* profile = I.profiles.at(surface);
+  const std::string& shader =
+      frame.localTerm ? I.hybridShadeFs : I.shadeFs[profile->IsClosedForm() ? 1 : 0];
+  vtkShaderProgram* program = this->BeginPerPixelStage(window, shader, width, height);
   if (program) {
     I.samplePosition->Activate();
     I.sampleWeight->Activate();
@@ -591,10 +606,17 @@ bool vtkLucentPass::ShadeSurface(vtkOpenGLRenderWindow* window, vtkLucentSurface
     program->SetUniformf("mmPerUnit", float(surface->GetMillimetresPerUnit()));
     program->SetUniform3f("cameraPosition", frame.camera);
     program->SetUniformf("eta", float(frame.material.eta));
-    vtkLucentProfile* profile = I.profiles.at(surface);
     profile->Activate(program);
+    if (frame.localTerm) {
+      setUniform3(
+          program, "worldCentre",
+          glm::dvec3(surface->GetCentre()[0], surface->GetCentre()[1], surface->GetCentre()[2]));
+      frame.localTerm->Activate(program);
+    }
     program->SetUniformMatrix("worldToClip", frame.worldToClip);
-    surface->Draw(program, vtkLucentSurface::Shade);
+    surface->Draw(program,
+                  frame.localTerm ? vtkLucentSurface::HybridShade : vtkLucentSurface::Shade);
+    if (frame.localTerm) frame.localTerm->Deactivate();
     profile->Deactivate();
     I.sampleWeight->Deactivate();
     I.samplePosition->Deactivate();
@@ -737,6 +759,10 @@ bool vtkLucentPass::ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* 
         p->second->ReleaseGraphicsResources(window);
         I.profiles.erase(p);
       }
+      if (auto l = I.localTerms.find(surface.Get()); l != I.localTerms.end()) {
+        l->second->ReleaseGraphicsResources(window);
+        I.localTerms.erase(l);
+      }
       I.plans.erase(surface.Get());
     }
   I.surfaces = std::move(seen);
@@ -752,8 +778,35 @@ bool vtkLucentPass::ShadeActor(vtkOpenGLRenderWindow* window, const lt::Techniqu
   if (twin.name == "diffuse-brdf")
     return this->ShadeDiffuseBrdf(window, surface, knobs, frame, width, height);
   frame.samples = int(knobs.integer("samples"));
+  frame.localTerm = nullptr;
+  if (twin.name == "hybrid")
+    return this->UpdateLocalTerm(window, surface, knobs, frame) &&
+           this->ShadeTsis(window, surface, frame, width, height);
   return this->UpdateProfile(window, surface, knobs, frame) &&
          this->ShadeTsis(window, surface, frame, width, height);
+}
+
+bool vtkLucentPass::UpdateLocalTerm(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
+                                    const lt::KnobValues& knobs, FrameSetup& frame) {
+  Internals& I = *this->Impl;
+  auto& local = I.localTerms[surface];
+  if (!local) local = vtkSmartPointer<vtkLucentLocalTerm>::New();
+  auto& profile = I.profiles[surface];
+  if (!profile) profile = vtkSmartPointer<vtkLucentProfile>::New();
+  std::string error;
+  const double diagonal = surface->GetMillimetreMesh().bounds().diagonal();
+  const bool ok = local->Update(window, frame.material, knobs, diagonal, error) &&
+                  profile->UpdateTable(window, "hybrid Rd Wg " + local->GetKey(),
+                                       local->GetSplit()->tables.global,
+                                       local->GetSplit()->profile.exitScale, error) &&
+                  local->RenderMap(window, surface, frame.towardLight, frame.irradiance,
+                                   float(frame.material.eta), error);
+  if (!ok) {
+    this->ReportError("vtkLucentPass (hybrid): " + error);
+    return false;
+  }
+  frame.localTerm = local;
+  return true;
 }
 
 bool vtkLucentPass::ShadeTsis(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
@@ -992,6 +1045,8 @@ void vtkLucentPass::ReleaseGraphicsResources(vtkWindow* w) {
   I.tauLuts.clear();
   for (auto& entry : I.profiles) entry.second->ReleaseGraphicsResources(w);
   I.profiles.clear();
+  for (auto& entry : I.localTerms) entry.second->ReleaseGraphicsResources(w);
+  I.localTerms.clear();
   I.rangeChecked.clear();
   I.plans.clear();  // keyed by the surfaces just released
   for (auto* fbo : {I.sceneFbo.Get(), I.translucentFbo.Get(), I.lightFbo.Get(), I.atlasFbo.Get(),

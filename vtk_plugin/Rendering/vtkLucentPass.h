@@ -1,9 +1,11 @@
 /// @file vtkLucentPass.h
 /// @brief Translucent (subsurface-scattering) rendering on the GPU as a vtkImageProcessingPass:
-/// the GPU twins of three techniques, texture-space importance sampling (tsis, Chang et al. 2008
-/// Sec. 3; the default, stages below), the voxel optical-thickness LUT (taulut, Mochida et al.
-/// 2016: vtkLucentTauLut.h) and the diffuse BRDF with Rd_total (diffuse-brdf), or "auto": the
-/// planner's choice per frame (SetMaxError).
+/// the GPU twins of the techniques that declare this pass their twin (`lucent techniques`):
+/// texture-space importance sampling (tsis, Chang et al. 2008 Sec. 3; the default, stages below),
+/// the hybrid (Sec. 4: the same stages with Rd Wg, plus the local term Rd Wl by a ring filter over
+/// a translucent shadow map drawn from the light, vtkLucentLocalTerm.h), the voxel
+/// optical-thickness LUT (taulut, Mochida et al. 2016: vtkLucentTauLut.h) and the diffuse BRDF
+/// with Rd_total (diffuse-brdf), or "auto": the planner's choice per frame (SetMaxError).
 ///
 /// Every visible, opaque vtkActor with polygons in the renderer is shaded as one homogeneous
 /// translucent object (light does not cross from one actor to another), except actors whose data
@@ -79,8 +81,8 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
 
   ///@{
   /// The technique whose GPU twin shades the actors: one of the registry's techniques that declare
-  /// vtkLucentPass as their twin (`lucent techniques`: tsis, the default, taulut, diffuse-brdf),
-  /// or "auto". An unknown name is reported once and renders nothing translucent.
+  /// vtkLucentPass as their twin (`lucent techniques`: tsis, the default, hybrid, taulut,
+  /// diffuse-brdf), or "auto". An unknown name is reported once and renders nothing translucent.
   void SetTechnique(const char* name);
   const char* GetTechnique() const { return this->Technique.c_str(); }
   static int GetNumberOfTechniques();
@@ -108,7 +110,8 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   /// default and lower bound as the technique declares; numbers are clamped to the twin's own
   /// upper bound (Capabilities::gpuTwinKnobs). A bad choice is reported when the frame is drawn.
   /// SetSamples and SetAtlasResolution are tsis.samples and tsis.atlas-resolution (the atlas
-  /// rounded up to a power of two for the mip pyramid).
+  /// rounded up to a power of two for the mip pyramid); with the hybrid, the pass's atlas is
+  /// hybrid.atlas-resolution.
   void SetKnob(const char* qualifiedName, const char* value);
   void SetKnobInteger(const char* qualifiedName, int value);
   void SetKnobReal(const char* qualifiedName, double value);
@@ -232,7 +235,11 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
                      const lucent::technique::KnobValues& knobs, const FrameSetup& frame);
   /// The technique's knobs as its twin takes them (the given ones clamped to the twin's range).
   lucent::technique::KnobValues TwinValues(const lucent::technique::Technique& t) const;
-  void RefreshTsisKnobs();
+  void RefreshAtlasKnobs();
+  /// The hybrid's split, global table and translucent shadow map for this actor
+  /// (vtkLucentLocalTerm); sets frame.localTerm, which stage 3 then adds.
+  bool UpdateLocalTerm(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
+                       const lucent::technique::KnobValues& knobs, FrameSetup& frame);
 #endif
   void ReadBackFrame(int width, int height);
   void ReportError(const std::string& message);
@@ -245,8 +252,8 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   std::string Technique = "tsis";
   std::map<std::string, std::string> Knobs;  ///< qualified name -> value (tsis's: Samples, ...)
   double SizeMm = 0.0;
-  int Samples = 0;          // tsis.samples (RefreshTsisKnobs)
-  int AtlasResolution = 0;  // tsis.atlas-resolution
+  int Samples = 0;          // the technique's samples, or tsis's (RefreshAtlasKnobs)
+  int AtlasResolution = 0;  // the technique's atlas-resolution, or tsis's
   int ShadowMapResolution = 1024;
   double LightDirection[3] = {0.0, 0.0, 0.0};
   double LightIrradiance = 1.0;

@@ -44,32 +44,35 @@ bool vtkLucentProfile::Update(vtkOpenGLRenderWindow* window, const lo::Material&
                            ch.alphaPrime, ch.fluxWeight, ch.fluenceWeight};
       for (int k = 0; k < 6; ++k) this->Dipole[k][c] = float(v[k]);
     }
-    this->Nodes = 0;
-  } else if (!this->UploadTable(window, lt::detail::profileOf<float>(material, knobs), profile,
-                                diagonalMm, error)) {
-    return false;
+    this->Rows = {};
+  } else {
+    // The CPU tsis's own table: float, from the float profile, with RadialTable's stated bound.
+    const auto table =
+        lo::radialTable(lt::detail::profileOf<float>(material, knobs), float(diagonalMm));
+    if (!this->UploadTable(window, table, profile, error)) return false;
   }
   this->BuiltKey = key;
   return true;
 }
 
-bool vtkLucentProfile::UploadTable(vtkOpenGLRenderWindow* window, const lo::Profile<float>& p,
-                                   const std::string& profile, double diagonalMm,
+bool vtkLucentProfile::UpdateTable(vtkOpenGLRenderWindow* window, const std::string& key,
+                                   const lo::RadialTable<float>& table, double exitScale,
                                    std::string& error) {
-  // The CPU tsis's own table: float, from the float profile, with RadialTable's stated bound.
-  const auto table = lo::radialTable(p, float(diagonalMm));
-  std::vector<float> rgba;
-  rgba.reserve(4 * table.size());
-  for (const auto& v : table.values()) rgba.insert(rgba.end(), {v[0], v[1], v[2], 0.0f});
+  if (key == this->BuiltKey) return true;
+  this->BuiltKey.clear();
+  this->ExitScale = float(exitScale);
+  this->ClosedForm = false;
+  if (!this->UploadTable(window, table, key, error)) return false;
+  this->BuiltKey = key;
+  return true;
+}
+
+bool vtkLucentProfile::UploadTable(vtkOpenGLRenderWindow* window,
+                                   const lo::RadialTable<float>& table, const std::string& name,
+                                   std::string& error) {
   if (!this->Table) this->Table = lucent::vtkpass::newNearestTexture(window);
-  const int glLimit = vtkTextureObject::GetMaximumTextureSize(window);  // -1 without a context
-  const int rowLimit = glLimit > 0 ? std::min(lucent::vtkpass::kMaxRowTexels, glLimit)
-                                   : lucent::vtkpass::kMaxRowTexels;
-  this->PerRow = std::max(1, std::min(int(table.size()), rowLimit));
-  this->Nodes = int(table.size());
-  this->RMax = table.rMax();
-  if (!lucent::vtkpass::uploadRows(this->Table, std::move(rgba), rowLimit)) {
-    error = "vtkLucentPass: the " + profile + " profile's table (" + std::to_string(table.size()) +
+  if (!this->Rows.upload(window, this->Table, table.values(), double(table.rMax()))) {
+    error = "vtkLucentPass: the " + name + " profile's table (" + std::to_string(table.size()) +
             " nodes) could not be uploaded as a texture";
     return false;
   }
@@ -81,9 +84,7 @@ void vtkLucentProfile::Activate(vtkShaderProgram* program) {
                           "dipole.alphaPrime", "dipole.fluxWeight", "dipole.fluenceWeight"};
   for (int k = 0; k < 6; ++k) program->SetUniform3f(names[k], this->Dipole[k]);
   program->SetUniformf("exitScale", this->ExitScale);
-  program->SetUniformi("profile.nodes", this->Nodes);
-  program->SetUniformi("profile.perRow", this->PerRow);
-  program->SetUniformf("profile.rMax", this->RMax);
+  this->Rows.setUniforms(program, "profile");
   if (this->Table) {
     this->Table->Activate();
     program->SetUniformi("profileTable", this->Table->GetTextureUnit());

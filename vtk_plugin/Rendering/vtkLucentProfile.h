@@ -4,7 +4,8 @@
 /// shaders/tsis_shade.frag. A pole pair (the classic or the better dipole) with rd=exact goes in
 /// closed form; every other case is the profile's radial table (optics::RadialTable, built as the
 /// CPU tsis builds it, rMax the object's diagonal in mm), uploaded as rows of a 2-D texture.
-/// Rebuilt only when the material, a knob or the diagonal changes.
+/// Rebuilt only when the material, a knob or the diagonal changes. The hybrid's twin gives its
+/// own table instead (UpdateTable).
 #ifndef vtkLucentProfile_h
 #define vtkLucentProfile_h
 
@@ -14,8 +15,11 @@
 #include <vtkObject.h>
 #include <vtkSmartPointer.h>
 
+#include <lucent/optics/dipole_lut.hpp>
 #include <lucent/optics/materials.hpp>
 #include <lucent/optics/profile.hpp>
+
+#include "lucentPassDrawing.h"
 
 namespace lucent::technique {
 class KnobValues;
@@ -38,6 +42,11 @@ class vtkLucentProfile : public vtkObject {
               const lucent::technique::KnobValues& knobs, double diagonalMm, std::string& warning,
               std::string& error);
 
+  /// A given table (the hybrid's Rd Wg) with its exit scale, uploaded when `key` changes.
+  bool UpdateTable(vtkOpenGLRenderWindow* window, const std::string& key,
+                   const lucent::optics::RadialTable<float>& table, double exitScale,
+                   std::string& error);
+
   /// Sets the stage's uniforms and binds the table; Deactivate after drawing.
   void Activate(vtkShaderProgram* program);
   void Deactivate();
@@ -45,7 +54,7 @@ class vtkLucentProfile : public vtkObject {
 
   bool IsClosedForm() const { return this->ClosedForm; }
   /// Nodes of the radial table (0 in closed form).
-  std::size_t GetTableNodes() const { return std::size_t(this->Nodes); }
+  std::size_t GetTableNodes() const { return std::size_t(this->Rows.nodes); }
 
  protected:
   vtkLucentProfile() = default;
@@ -55,16 +64,15 @@ class vtkLucentProfile : public vtkObject {
   vtkLucentProfile(const vtkLucentProfile&) = delete;
   void operator=(const vtkLucentProfile&) = delete;
 
-  bool UploadTable(vtkOpenGLRenderWindow* window, const lucent::optics::Profile<float>& p,
-                   const std::string& profile, double diagonalMm, std::string& error);
+  bool UploadTable(vtkOpenGLRenderWindow* window, const lucent::optics::RadialTable<float>& table,
+                   const std::string& name, std::string& error);
 
   std::string BuiltKey;
   bool ClosedForm = false;
   /// sigma_tr, z_r, z_v, alpha', C_E, C_phi / D per channel (LucentDipole in optics.glsl).
   float Dipole[6][3] = {};
   float ExitScale = 1;
-  int Nodes = 0, PerRow = 1;
-  float RMax = 1;
+  lucent::vtkpass::RowTable Rows;  ///< the table's layout (nodes 0 in closed form)
   vtkSmartPointer<vtkTextureObject> Table;
 };
 

@@ -33,8 +33,16 @@ class vtkLucentSurface : public vtkObject {
   bool Update(vtkActor* actor, double sizeMm, int atlasResolution, std::string& error);
 
   /// Draws the triangles with @p program; @p stage picks the vertex array (one per program).
-  enum Stage { LightDepth = 0, Atlas = 1, Shade = 2, TauLightView = 3, TauShade = 4 };
-  static constexpr int kStages = 5;
+  enum Stage {
+    LightDepth = 0,
+    Atlas = 1,
+    Shade = 2,
+    TauLightView = 3,
+    TauShade = 4,
+    LocalLightView = 5,
+    HybridShade = 6
+  };
+  static constexpr int kStages = 7;
   void Draw(vtkShaderProgram* program, Stage stage);
 
   void ReleaseGraphicsResources(vtkWindow* window);

@@ -13,6 +13,7 @@
 #include <vtkTextureObject.h>
 #include <vtk_glew.h>
 
+#include "lucentLightViewMap.h"
 #include "lucentPassDrawing.h"
 #include "vtkLucentSurface.h"
 
@@ -26,17 +27,12 @@ using namespace lucent::vtkpass;
 /// sigma_t's table: medium indices 0 (none) .. 255.
 constexpr int kMediumSlots = 256;
 
-void set3f(vtkShaderProgram* program, const char* name, const glm::dvec3& v) {
-  const float f[3] = {float(v.x), float(v.y), float(v.z)};
-  program->SetUniform3f(name, f);
-}
-
 }  // namespace
 
 struct vtkLucentTauLut::Textures {
   vtkSmartPointer<vtkTextureObject> voxelMedium, voxelNumber, surfaceVoxel, mediumSigmaT,
-      pathLengths, clusterCell, clusterPoint, mapPosition, mapDensity, mapDepth;
-  vtkSmartPointer<vtkOpenGLFramebufferObject> mapFbo;
+      pathLengths, clusterCell, clusterPoint;
+  LightViewTargets map;  ///< the irradiance and voxel-number maps
   float lengthUnit = 1;
   int storage = 0, media = 1;
   std::vector<vtkTextureObject*> voxelData() const {
@@ -47,8 +43,8 @@ struct vtkLucentTauLut::Textures {
 
 vtkLucentTauLut::vtkLucentTauLut()
     : Tex(new Textures),
-      LightViewVs(lucent::glsl::kTaulutLightViewVert),
-      LightViewFs(withSharedGlsl(lucent::glsl::kTaulutLightViewFrag)) {}
+      LightViewVs(lucent::glsl::kLightViewMapVert),
+      LightViewFs(lightViewMapShader(true)) {}
 vtkLucentTauLut::~vtkLucentTauLut() = default;
 
 std::size_t vtkLucentTauLut::GetSurfaceVoxels() const {
@@ -207,9 +203,9 @@ void vtkLucentTauLut::BindVoxelData(vtkShaderProgram* program) {
     program->SetUniformi(names[k], textures[k]->GetTextureUnit());
   }
   const lv::MediaGrid& grid = this->Lut->paths().grid();
-  set3f(program, "gridSize", glm::dvec3(grid.dims));
-  set3f(program, "gridOrigin", grid.origin);
-  set3f(program, "gridSpacing", grid.spacing);
+  setUniform3(program, "gridSize", glm::dvec3(grid.dims));
+  setUniform3(program, "gridOrigin", grid.origin);
+  setUniform3(program, "gridSpacing", grid.spacing);
   program->SetUniformi("rowTexels", this->RowTexels);
   program->SetUniformi("storage", T.storage);
   program->SetUniformi("media", T.media);
@@ -229,45 +225,18 @@ bool vtkLucentTauLut::RenderLightView(vtkOpenGLRenderWindow* window, vtkLucentSu
     return false;
   }
   Textures& T = *this->Tex;
-  const int res = this->MapResolution;
-  if (!T.mapFbo) {
-    T.mapFbo = newFramebuffer(window);
-    T.mapPosition = newColorTexture(window, res, res);
-    T.mapDensity = newColorTexture(window, res, res);
-    T.mapDepth = newDepthTexture(window, res, res);
-  }
-  for (auto* t : {T.mapPosition.Get(), T.mapDensity.Get(), T.mapDepth.Get()})
-    if (int(t->GetWidth()) != res) t->Resize(unsigned(res), unsigned(res));
-  vtkOpenGLState* state = window->GetState();
-  beginDrawing(state, T.mapFbo, {T.mapPosition, T.mapDensity}, T.mapDepth, res, res);
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthFunc(GL_LESS);
-  state->vtkglDepthMask(GL_TRUE);
-  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  state->vtkglClearColor(0, 0, 0, 0);
-  state->vtkglClearDepth(1.0);
-  state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  T.map.begin(window, this->MapResolution);
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
       this->LightViewVs.c_str(), this->LightViewFs.c_str(), "");
   if (program) {
     const auto& light = std::get<lucent::scene::DirectionalLight>(scene.lights.front());
-    set3f(program, "worldCentre",
-          glm::dvec3(surface->GetCentre()[0], surface->GetCentre()[1], surface->GetCentre()[2]));
-    program->SetUniformf("mmPerUnit", float(surface->GetMillimetresPerUnit()));
-    set3f(program, "mapCentre", this->MapFrame.centre);
-    set3f(program, "mapT", this->MapFrame.t);
-    set3f(program, "mapB", this->MapFrame.b);
-    set3f(program, "mapAxis", this->MapFrame.axis);
-    program->SetUniformf("mapHalfExtent", float(this->MapFrame.halfExtent));
-    set3f(program, "towardLight", glm::normalize(light.towardLight));
-    set3f(program, "lightIrradiance", light.irradiance);
-    program->SetUniformf("eta", this->Eta);
-    program->SetUniformf("maxObliquity", float(lucent::atlas::kMaxObliquity));
+    setLightViewUniforms(program, *surface, this->MapFrame, light.towardLight, light.irradiance,
+                         this->Eta);
     this->BindVoxelData(program);
     surface->Draw(program, vtkLucentSurface::TauLightView);
     this->UnbindVoxelData();
   }
-  endDrawing(T.mapFbo);
+  T.map.end();
   if (!program) error = "vtkLucentPass: the taulut light-view shader did not compile";
   return program != nullptr;
 }
@@ -287,16 +256,7 @@ bool vtkLucentTauLut::Shade(vtkOpenGLRenderWindow*, vtkLucentSurface* surface,
       profile[3 * std::size_t(k) + std::size_t(c)] = float(f.profileAt[std::size_t(k)][c]);
     }
   }
-  T.mapPosition->Activate();
-  T.mapDensity->Activate();
-  program->SetUniformi("mapPosition", T.mapPosition->GetTextureUnit());
-  program->SetUniformi("mapDensity", T.mapDensity->GetTextureUnit());
-  program->SetUniformi("mapResolution", this->MapResolution);
-  set3f(program, "mapCentre", this->MapFrame.centre);
-  set3f(program, "mapT", this->MapFrame.t);
-  set3f(program, "mapB", this->MapFrame.b);
-  program->SetUniformf("mapHalfExtent", float(this->MapFrame.halfExtent));
-  program->SetUniformf("mapTexel", float(2 * this->MapFrame.halfExtent / this->MapResolution));
+  bindMapForFiltering(program, T.map, this->MapFrame, this->MapResolution);
   program->SetUniformi("rings", strata - 1);
   program->SetUniformi("perRing", f.perRing);
   program->SetUniform1fv("ringRadius", kMaxStrata, radius.data());
@@ -304,26 +264,26 @@ bool vtkLucentTauLut::Shade(vtkOpenGLRenderWindow*, vtkLucentSurface* surface,
   program->SetUniform3fv("ringProfile", kMaxStrata,
                          reinterpret_cast<const float(*)[3]>(profile.data()));
   program->SetUniformi("rotated", this->Lut->rotatedPattern() ? 1 : 0);
-  set3f(program, "worldCentre",
-        glm::dvec3(surface->GetCentre()[0], surface->GetCentre()[1], surface->GetCentre()[2]));
+  setUniform3(
+      program, "worldCentre",
+      glm::dvec3(surface->GetCentre()[0], surface->GetCentre()[1], surface->GetCentre()[2]));
   program->SetUniformf("mmPerUnit", float(surface->GetMillimetresPerUnit()));
   program->SetUniform3f("cameraPosition", camera);
   program->SetUniformf("eta", this->Eta);
   this->BindVoxelData(program);
   surface->Draw(program, vtkLucentSurface::TauShade);
   this->UnbindVoxelData();
-  T.mapDensity->Deactivate();
-  T.mapPosition->Deactivate();
+  unbindMap(T.map);
   return true;
 }
 
 void vtkLucentTauLut::ReleaseGraphicsResources(vtkWindow* window) {
   Textures& T = *this->Tex;
-  for (auto* t : {T.voxelMedium.Get(), T.voxelNumber.Get(), T.surfaceVoxel.Get(),
-                  T.mediumSigmaT.Get(), T.pathLengths.Get(), T.clusterCell.Get(),
-                  T.clusterPoint.Get(), T.mapPosition.Get(), T.mapDensity.Get(), T.mapDepth.Get()})
+  for (auto* t :
+       {T.voxelMedium.Get(), T.voxelNumber.Get(), T.surfaceVoxel.Get(), T.mediumSigmaT.Get(),
+        T.pathLengths.Get(), T.clusterCell.Get(), T.clusterPoint.Get()})
     if (t) t->ReleaseGraphicsResources(window);
-  if (T.mapFbo) T.mapFbo->ReleaseGraphicsResources(window);
+  T.map.release(window);
   this->Tex.reset(new Textures);
   this->BuiltKey.clear();  // the next Prepare uploads again into the new context
   this->Lut = nullptr;

@@ -182,6 +182,23 @@ atlas::RingFilter ringFilter(const Profile& profile, const KnobValues& knobs, do
   return ring;
 }
 
+/// The hybrid's split as a frame builds it (Chang et al. 2008 Sec. 4.1-4.2), shared with its GPU
+/// twin: the profile, Rp, the tables of Rd Wl and Rd Wg on [0, diag] and the local ring filter.
+struct HybridSplit {
+  optics::Profile<double> profile;
+  double rp;
+  atlas::HybridProfiles tables;
+  atlas::RingFilter ring;
+  HybridSplit(const optics::Material& material, const KnobValues& knobs, double diag,
+              Statistics& stats)
+      : profile(profileOf<double>(material, knobs)),
+        rp(atlas::hybridRp(profile, knobs.real("c"))),
+        tables(profile, rp, diag, knobs.real("K")),
+        ring(ringFilter(tables.local, knobs, diag, stats)) {
+    stats.figures["rp_mm"] = rp;
+  }
+};
+
 class Tsis final : public Prepared {
  public:
   Tsis(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats)
@@ -216,20 +233,15 @@ class Hybrid final : public Prepared {
       : Prepared(knobs), mAtlas(buildAtlas(scene, knobs, stats)) {}
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
-    const auto profile = profileOf<double>(scene.medium.material, mKnobs);
-    const double diag = scene.mesh.bounds().diagonal();
-    const double rp = atlas::hybridRp(profile, mKnobs.real("c"));
-    const atlas::HybridProfiles profiles(profile, rp, diag, mKnobs.real("K"));
-    stats.figures["rp_mm"] = rp;
-    auto ring = ringFilter(profiles.local, mKnobs, diag, stats);
+    HybridSplit split(scene.medium.material, mKnobs, scene.mesh.bounds().diagonal(), stats);
     const float eta = float(scene.medium.material.eta);
-    const atlas::LocalTermEvaluator local(shadowMaps(scene, mKnobs, stats), std::move(ring),
-                                          profiles.local, eta);
-    const atlas::TsisEvaluator global(drawSamples(mAtlas, scene, mKnobs, stats), profiles.global,
-                                      eta);
+    const atlas::LocalTermEvaluator local(shadowMaps(scene, mKnobs, stats), std::move(split.ring),
+                                          split.tables.local, eta);
+    const atlas::TsisEvaluator global(drawSamples(mAtlas, scene, mKnobs, stats),
+                                      split.tables.global, eta);
     FrameResult out;
     out.radiosity = evaluate(atlas::HybridEvaluator(local, global), scene, request, mKnobs, stats);
-    out.exitScale = profile.exitScale;
+    out.exitScale = split.profile.exitScale;
     return out;
   }
 
@@ -343,6 +355,17 @@ inline Technique hybridTechnique() {
       detail::evaluationKnobs());
   t.capabilities = detail::textureSpaceCapabilities();
   t.capabilities.environmentLights = false;  // a translucent shadow map needs a light view
+  t.capabilities.gpuTwin = "vtkLucentPass";
+  // tsis's bounds, and the local filter's: every pixel reads all L C taps and two map texels each
+  // (a GPU watchdog stops long loops); the map is two RGBA32F textures.
+  t.capabilities.gpuTwinKnobs = {{"samples", 65536},
+                                 {"atlas-resolution", 4096},
+                                 {"rings", 64},
+                                 {"ring-samples", 64},
+                                 {"map", 4096},
+                                 {"c"},
+                                 {"K"},
+                                 {"profile"}};
   t.defaultSweep = {{"samples", {"400", "900", "3600"}}};
   t.quickKnobs = {{"samples", "256"}, {"atlas-resolution", "256"}, {"map", "128"},
                   {"rings", "8"},     {"ring-samples", "8"},       {"env-strata", "4"}};

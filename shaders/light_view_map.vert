@@ -1,6 +1,7 @@
 //VTK::System::Dec
-// The voxel optical-thickness LUT, stage 1: the object seen from the light (orthographic along the
-// light's axis over the object's bounding sphere, as atlas/translucent_shadow_map.hpp frames it).
+// The object seen from the light, for the hybrid's translucent shadow map and taulut's stage 1:
+// orthographic along the light's axis over the object's bounding sphere, as
+// atlas/translucent_shadow_map.hpp frames it.
 in vec3 positionWC;
 in vec3 normalWC;
 uniform vec3 worldCentre;  // the world point at the millimetre frame's origin

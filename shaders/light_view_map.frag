@@ -1,10 +1,17 @@
 //VTK::System::Dec
 //VTK::Output::Dec
+//LUCENT::MapVariant
 //LUCENT::Optics
+// The object seen from the directional light, one draw: per texel the first hit (mm), a tag
+// (0 = uncovered) and rho = E / |n_geom . axis|, E = Ft(eta, w) (n . w) I (TranslucentShadowMap).
+// The hybrid's translucent shadow map tags a covered texel 1 (Chang et al. 2008 Sec. 4.2); taulut's
+// voxel-number map tags it 1 + its surface voxel's number (Mochida et al. 2016 Sec. 2.2, Eq. 2).
+#if LUCENT_VOXEL_NUMBER
 //LUCENT::Voxel
-// The irradiance map and the voxel-number map of Mochida et al. 2016 Sec. 2.2 in one draw: per
-// texel the first hit (mm), 1 + its surface voxel's number (0 = uncovered), and rho = E / |n_geom .
-// axis|, E = Ft(eta, w) (n . w) I (Eq. 2) for the directional light (TranslucentShadowMap).
+float lucentMapTag(vec3 p) { return 1.0 + float(lucentSurfaceNumber(p)); }
+#else
+float lucentMapTag(vec3 p) { return 1.0; }
+#endif
 in vec3 positionMmOutput;
 in vec3 normalVSOutput;
 uniform vec3 towardLight;      // unit
@@ -18,6 +25,6 @@ void main()
   vec3 e = cosN > 0.0 ? lightIrradiance * (cosN * lucentFresnelTransmittance(cosN, eta)) : vec3(0.0);
   vec3 faceNormal = normalize(cross(dFdx(positionMmOutput), dFdy(positionMmOutput)));
   float obliquity = min(maxObliquity, 1.0 / max(abs(dot(faceNormal, towardLight)), 1e-12));
-  gl_FragData[0] = vec4(positionMmOutput, 1.0 + float(lucentSurfaceNumber(positionMmOutput)));
+  gl_FragData[0] = vec4(positionMmOutput, lucentMapTag(positionMmOutput));
   gl_FragData[1] = vec4(e * obliquity, 1.0);
 }
