@@ -74,12 +74,27 @@ class TauLut final : public Prepared {
 
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
-    const std::vector<glm::dvec3> sigmaT = extinction(scene);
     mLookup.resetFarPoints();
-    // The irradiance map of Eq. 2 per light, with its first hits (the voxel-number map follows).
+    const voxel::TauLutRadiance& model =
+        mLit.get(scene, mKnobs, stats, [&](Statistics& s) { return lightStages(scene, s); });
+    FrameResult out;
+    out.radiosity = evaluate(model, scene, request, mKnobs, stats, mLit.vertexCache());
+    stats.figures["far_points"] = double(mLookup.farPoints());
+    if (mLookup.farPoints() > 0)
+      stats.warnings.push_back(
+          "taulut: " + std::to_string(mLookup.farPoints()) + " points lie more than " +
+          std::to_string(voxel::SurfaceVoxelLookup::kSearchRadius) +
+          " voxels from every surface voxel (features thinner than a voxel); raise voxels");
+    return out;
+  }
+
+  /// The light stages, kept while the light, the material and the knobs hold (LitStages): the
+  /// irradiance map of Eq. 2 per light with its first hits, then the voxel-number map.
+  voxel::TauLutRadiance lightStages(const SceneDescription& scene, Statistics& stats) {
+    const std::vector<glm::dvec3> sigmaT = extinction(scene);
     std::vector<atlas::TranslucentShadowMap> maps =
         lightViewMaps(scene, irradianceSettings(scene), mapResolution(), stats, "irradiance_maps");
-    const voxel::TauLutRadiance model = stats.timeFrame("voxel_number_maps", [&] {
+    voxel::TauLutRadiance model = stats.timeFrame("voxel_number_maps", [&] {
       voxel::TauLutRadiance m(std::move(maps), mPaths, mLookup, sigmaT, filterExtinction(sigmaT),
                               taps(), scene.mesh.bounds().diagonal(), scene.parallelFor);
       m.setRotatedPattern(rotatedPattern());
@@ -88,15 +103,7 @@ class TauLut final : public Prepared {
     stats.samples = double(taps());
     stats.sampleUnit = "filter taps";
     stats.figures["filter_radius_mm"] = model.filter().outerRadius;
-    FrameResult out;
-    out.radiosity = evaluate(model, scene, request, mKnobs, stats);
-    stats.figures["far_points"] = double(mLookup.farPoints());
-    if (mLookup.farPoints() > 0)
-      stats.warnings.push_back(
-          "taulut: " + std::to_string(mLookup.farPoints()) + " points lie more than " +
-          std::to_string(voxel::SurfaceVoxelLookup::kSearchRadius) +
-          " voxels from every surface voxel (features thinner than a voxel); raise voxels");
-    return out;
+    return model;
   }
 
   ///@{ What a frame reads, for the CPU frame and the GPU twin alike (vtkLucentPass).
@@ -151,6 +158,7 @@ class TauLut final : public Prepared {
   voxel::SurfaceVoxels mSurface;
   voxel::SurfacePaths mPaths;
   voxel::SurfaceVoxelLookup mLookup;
+  LitStages<voxel::TauLutRadiance> mLit;  ///< after what its model refers to
 };
 
 }  // namespace detail

@@ -5,30 +5,12 @@
 /// the technique's capabilities say a frame takes them) re-runs only the frame.
 #include <memory>
 #include <string>
-#include <variant>
 
 #include "../util/fingerprint.hpp"
 #include "registry.hpp"
+#include "scene_fingerprint.hpp"
 
 namespace lucent::technique {
-
-namespace detail {
-inline void addLight(util::Fingerprint& f, const scene::Light& light) {
-  f.addValue(std::uint64_t(light.index()));
-  if (const auto* p = std::get_if<scene::PointLight>(&light))
-    f.addValue(p->position).addValue(p->intensity);
-  else if (const auto* d = std::get_if<scene::DirectionalLight>(&light))
-    f.addValue(d->towardLight).addValue(d->irradiance);
-  else if (const auto* e = std::get_if<scene::EnvironmentLight>(&light))
-    f.addValue(e->width).addValue(e->height).addValue(e->layout).addValue(e->scale).addArray(
-        e->radiance);
-}
-
-inline void addMaterial(util::Fingerprint& f, const optics::Material& m) {
-  f.add(m.name).addValue(m.eta);
-  for (int c = 0; c < 3; ++c) f.addValue(m.sigmaA[c]).addValue(m.sigmaSPrime[c]);
-}
-}  // namespace detail
 
 /// What a technique's prepare read besides the geometry: its name, its prepare-phase knobs, and
 /// the material and the lights unless a frame can change them (Capabilities::dynamicMaterial,

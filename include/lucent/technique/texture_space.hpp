@@ -16,6 +16,7 @@
 #include "../atlas/texture_atlas.hpp"
 #include "../atlas/tsis_evaluator.hpp"
 #include "../reference/vertex_radiosity.hpp"
+#include "lit_stages.hpp"
 #include "single_scattering_term.hpp"
 #include "technique.hpp"
 #include "validity.hpp"
@@ -132,16 +133,19 @@ inline atlas::ImportanceSamples drawSamples(
 }
 
 /// B at the request's points, summed there (eval=pixel) or at the mesh's vertices and interpolated.
+/// B at the vertices depends on the light stages only: it is summed once into `vertexCache` (the
+/// light stages' own, LitStages::vertexCache) and a view change only interpolates.
 template <class Radiosity>
 std::vector<glm::dvec3> evaluate(const Radiosity& eval, const SceneDescription& scene,
                                  const ShadeRequest& request, const KnobValues& knobs,
-                                 Statistics& stats) {
+                                 Statistics& stats, std::vector<glm::dvec3>& vertexCache) {
   const bool perVertex = knobs.pick<bool>("eval", {{"pixel", false}, {"vertex", true}});
   return stats.timeFrame("evaluation", [&] {
     if (!perVertex || request.vertices)
       return radiosityAt(eval, scene, request, "Eq. 11 per point");
-    const std::vector<glm::dvec3> atVertices =
-        radiosityAt(eval, scene, vertexRequest(scene.mesh), "Eq. 11 per vertex");
+    if (vertexCache.size() != scene.mesh.positions.size())
+      vertexCache = radiosityAt(eval, scene, vertexRequest(scene.mesh), "Eq. 11 per vertex");
+    const std::vector<glm::dvec3>& atVertices = vertexCache;
     std::vector<glm::dvec3> b(request.points.size());
     for (std::size_t i = 0; i < b.size(); ++i)
       b[i] = reference::interpolateAtHit(scene.mesh, atVertices, request.points[i]);
@@ -199,32 +203,39 @@ struct HybridSplit {
   }
 };
 
+/// tsis's light stages: irradiance into the atlas, N samples, and the sum over them of the
+/// profile's table (or its closed form with rd=exact).
+inline atlas::TsisEvaluator tsisEvaluator(const std::shared_ptr<const atlas::AtlasSurface>& atlas,
+                                          const SceneDescription& scene, const KnobValues& knobs,
+                                          Statistics& stats) {
+  atlas::ImportanceSamples samples = drawSamples(atlas, scene, knobs, stats);
+  const auto profile = profileOf<float>(scene.medium.material, knobs);
+  const RdLookup lookup = rdLookupOf(knobs);
+  if (lookup.closedForm) return atlas::TsisEvaluator(std::move(samples), profile);
+  if (!lookup.warning.empty()) stats.warnings.push_back(lookup.warning);
+  const auto table = optics::radialTable(profile, float(scene.mesh.bounds().diagonal()));
+  stats.figures["rd_table_nodes"] = double(table.size());
+  return atlas::TsisEvaluator(std::move(samples), table, profile.eta);
+}
+
 class Tsis final : public Prepared {
  public:
   Tsis(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats)
       : Prepared(knobs), mAtlas(buildAtlas(scene, knobs, stats)) {}
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
-    atlas::ImportanceSamples samples = drawSamples(mAtlas, scene, mKnobs, stats);
-    const auto profile = profileOf<float>(scene.medium.material, mKnobs);
-    std::optional<atlas::TsisEvaluator> eval;
-    const RdLookup lookup = rdLookupOf(mKnobs);
-    if (lookup.closedForm) {
-      eval.emplace(std::move(samples), profile);
-    } else {
-      if (!lookup.warning.empty()) stats.warnings.push_back(lookup.warning);
-      const auto table = optics::radialTable(profile, float(scene.mesh.bounds().diagonal()));
-      stats.figures["rd_table_nodes"] = double(table.size());
-      eval.emplace(std::move(samples), table, profile.eta);
-    }
+    const atlas::TsisEvaluator& eval = mLit.get(scene, mKnobs, stats, [&](Statistics& s) {
+      return tsisEvaluator(mAtlas, scene, mKnobs, s);
+    });
     FrameResult out;
-    out.radiosity = evaluate(*eval, scene, request, mKnobs, stats);
-    out.exitScale = double(profile.exitScale);
+    out.radiosity = evaluate(eval, scene, request, mKnobs, stats, mLit.vertexCache());
+    out.exitScale = double(profileOf<float>(scene.medium.material, mKnobs).exitScale);
     return out;
   }
 
  private:
   std::shared_ptr<const atlas::AtlasSurface> mAtlas;
+  LitStages<atlas::TsisEvaluator> mLit;
 };
 
 class Hybrid final : public Prepared {
@@ -233,20 +244,33 @@ class Hybrid final : public Prepared {
       : Prepared(knobs), mAtlas(buildAtlas(scene, knobs, stats)) {}
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
-    HybridSplit split(scene.medium.material, mKnobs, scene.mesh.bounds().diagonal(), stats);
-    const float eta = float(scene.medium.material.eta);
-    const atlas::LocalTermEvaluator local(shadowMaps(scene, mKnobs, stats), std::move(split.ring),
-                                          split.tables.local, eta);
-    const atlas::TsisEvaluator global(drawSamples(mAtlas, scene, mKnobs, stats),
-                                      split.tables.global, eta);
+    const Lit& lit = mLit.get(scene, mKnobs, stats, [&](Statistics& s) { return build(scene, s); });
     FrameResult out;
-    out.radiosity = evaluate(atlas::HybridEvaluator(local, global), scene, request, mKnobs, stats);
-    out.exitScale = split.profile.exitScale;
+    out.radiosity = evaluate(atlas::HybridEvaluator(lit.local, lit.global), scene, request, mKnobs,
+                             stats, mLit.vertexCache());
+    out.exitScale = lit.exitScale;
     return out;
   }
 
  private:
+  /// The light stages: the split, a translucent shadow map per light, the samples.
+  struct Lit {
+    atlas::LocalTermEvaluator local;
+    atlas::TsisEvaluator global;
+    double exitScale;
+  };
+  Lit build(const SceneDescription& scene, Statistics& stats) const {
+    HybridSplit split(scene.medium.material, mKnobs, scene.mesh.bounds().diagonal(), stats);
+    const float eta = float(scene.medium.material.eta);
+    atlas::LocalTermEvaluator local(shadowMaps(scene, mKnobs, stats), std::move(split.ring),
+                                    split.tables.local, eta);
+    atlas::TsisEvaluator global(drawSamples(mAtlas, scene, mKnobs, stats), split.tables.global,
+                                eta);
+    return {std::move(local), std::move(global), split.profile.exitScale};
+  }
+
   std::shared_ptr<const atlas::AtlasSurface> mAtlas;
+  LitStages<Lit> mLit;
 };
 
 class Tsm final : public Prepared {
@@ -254,21 +278,28 @@ class Tsm final : public Prepared {
   explicit Tsm(const KnobValues& knobs) : Prepared(knobs) {}
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
+    const atlas::LocalTermEvaluator& local =
+        mLit.get(scene, mKnobs, stats, [&](Statistics& s) { return build(scene, s); });
+    FrameResult out;
+    out.radiosity = evaluate(local, scene, request, mKnobs, stats, mLit.vertexCache());
+    out.exitScale = profileOf<double>(scene.medium.material, mKnobs).exitScale;
+    return out;
+  }
+
+ private:
+  /// The light stages: the filter of all of Rd and a translucent shadow map per light.
+  atlas::LocalTermEvaluator build(const SceneDescription& scene, Statistics& stats) const {
     const auto rd = profileOf<double>(scene.medium.material, mKnobs);
     const double diag = scene.mesh.bounds().diagonal();
     const auto profile = optics::radialTable(rd, float(diag));
     auto ring = ringFilter(profile, mKnobs, diag, stats);
     stats.samples = stats.figures["local_filter_samples"];
     stats.sampleUnit = "ring filter samples";
-    const atlas::LocalTermEvaluator local(shadowMaps(scene, mKnobs, stats), std::move(ring),
-                                          profile, float(scene.medium.material.eta));
-    FrameResult out;
-    out.radiosity = evaluate(local, scene, request, mKnobs, stats);
-    out.exitScale = rd.exitScale;
-    return out;
+    return atlas::LocalTermEvaluator(shadowMaps(scene, mKnobs, stats), std::move(ring), profile,
+                                     float(scene.medium.material.eta));
   }
 
- private:
+  LitStages<atlas::LocalTermEvaluator> mLit;
 };
 
 inline Capabilities textureSpaceCapabilities() {
