@@ -35,10 +35,10 @@ struct Inner {
 };
 
 /// `technique` on the CPU (the technique layer's, with Embree shadows) at every covered pixel of
-/// the GPU frame, compared channel by channel.
+/// the GPU frame, compared channel by channel; `light` in world coordinates.
 inline Agreement compareWithCpu(const Frame& f, const lucent::scene::TriangleMesh& world,
                                 double sizeMm, const std::string& material,
-                                const glm::dvec3& towardLight, const std::string& technique,
+                                const lucent::scene::Light& light, const std::string& technique,
                                 const lt::KnobList& knobs, const std::vector<Inner>& inner = {}) {
   const lucent::scene::Bounds bounds = world.bounds();
   const MillimetreFrame toMm{bounds.center(), sizeMm / bounds.diagonal()};
@@ -50,7 +50,11 @@ inline Agreement compareWithCpu(const Frame& f, const lucent::scene::TriangleMes
   scene.mesh = mm;
   scene.vertexNormals = mm.vertexNormals();
   scene.medium.material = *lucent::optics::findMaterial(material);
-  scene.lights = {lucent::scene::DirectionalLight{glm::normalize(towardLight), glm::dvec3(1.0)}};
+  scene.lights = {light};
+  if (auto* p = std::get_if<lucent::scene::PointLight>(&scene.lights[0])) {
+    p->position = toMm(p->position);  // the same intensity over squared millimetres
+    p->intensity *= toMm.scale * toMm.scale;
+  }
   scene.caster = &caster;
   for (const Inner& body : inner) {
     lt::Inclusion inc;
@@ -95,6 +99,17 @@ inline Agreement compareWithCpu(const Frame& f, const lucent::scene::TriangleMes
     a.meanRatio[c] = gpuSum[c] / cpuSum[c];
   }
   return a;
+}
+
+/// The same under a directional light of irradiance 1 from `towardLight`.
+inline Agreement compareWithCpu(const Frame& f, const lucent::scene::TriangleMesh& world,
+                                double sizeMm, const std::string& material,
+                                const glm::dvec3& towardLight, const std::string& technique,
+                                const lt::KnobList& knobs, const std::vector<Inner>& inner = {}) {
+  return compareWithCpu(
+      f, world, sizeMm, material,
+      lucent::scene::DirectionalLight{glm::normalize(towardLight), glm::dvec3(1.0)}, technique,
+      knobs, inner);
 }
 
 /// The GPU frame agrees with the CPU on nearly every pixel it drew (a pixel off the mesh by more

@@ -57,6 +57,14 @@ struct PassScene {
     renderer->ResetCamera();
   }
   void render() { window->Render(); }
+  /// The scene light made a point light at `distance` times its direction from the origin (its
+  /// focal point, where its irradiance is 1).
+  void makePositional(const double towardLight[3], double distance) {
+    light->PositionalOn();
+    light->SetConeAngle(90);  // a spotlight cone only limits VTK's own shading
+    light->SetPosition(distance * towardLight[0], distance * towardLight[1],
+                       distance * towardLight[2]);
+  }
   /// The final image, RGB bytes.
   std::vector<unsigned char> pixels() {
     vtkNew<vtkUnsignedCharArray> rgb;

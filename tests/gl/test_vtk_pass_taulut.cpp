@@ -79,6 +79,35 @@ TEST_CASE(
 }
 
 TEST_CASE(
+    "vtkLucentPass taulut: under a positional scene light it matches taulut on the CPU under "
+    "the same point light") {
+  // The cube with a cavity, a point light 4 units (a cube's side is 2) out along the same
+  // direction: its irradiance falls off across the cube, and the map is framed along its axis.
+  const auto world = lucent::scene::shapes::cubeWithCavity(0.6);
+  const double toward[3] = {0.6, 0.5, -0.6};
+  const double sizeMm = 5.0, distance = 4.0;
+  PassScene scene(polyDataOf(world), toward, 96);
+  scene.makePositional(toward, distance);
+  scene.pass->SetTechnique("taulut");
+  scene.pass->SetMaterial("marble");
+  scene.pass->SetSizeMm(sizeMm);
+  const lt::KnobList knobs = {{"voxels", "16"}, {"map", "256"}, {"pattern", "fixed"}};
+  setKnobs(scene.pass, knobs);
+  scene.render();
+  INFO("error: " << std::string(scene.pass->GetLastError()));
+  REQUIRE(scene.pass->GetTranslucentActorCount() == 1);
+  const Frame f = lastFrame(scene.pass);
+  REQUIRE(f.covered() > 1500);
+  CHECK(f.allFiniteNonNegative());
+  const glm::dvec3 w(toward[0], toward[1], toward[2]);
+  const lucent::scene::PointLight point{distance * w,
+                                        glm::dvec3(distance * distance * glm::dot(w, w))};
+  lucent_test::checkAgreement(
+      lucent_test::compareWithCpu(f, world, sizeMm, "marble", point, "taulut", knobs),
+      "point light");
+}
+
+TEST_CASE(
     "vtkLucentPass taulut: an inner-body actor fills the actor around it with its material, as "
     "taulut on the CPU does") {
   // A 6 mm marble sphere holding a ketchup sphere of half its radius, back-lit from the side: the

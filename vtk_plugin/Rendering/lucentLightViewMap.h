@@ -6,6 +6,8 @@
 #ifndef lucentLightViewMap_h
 #define lucentLightViewMap_h
 
+#include <variant>
+
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
@@ -27,6 +29,22 @@ namespace lucent::vtkpass {
 inline void setUniform3(vtkShaderProgram* program, const char* name, const glm::dvec3& v) {
   const float f[3] = {float(v.x), float(v.y), float(v.z)};
   program->SetUniform3f(name, f);
+}
+
+/// The uniforms of shaders/light_source.glsl for `light`, a point or a directional light, in the
+/// frame the stage's positions are in.
+inline void setLightSourceUniforms(vtkShaderProgram* program, const scene::Light& light) {
+  if (const auto* p = std::get_if<scene::PointLight>(&light)) {
+    program->SetUniformi("lightIsPoint", 1);
+    setUniform3(program, "lightPosition", p->position);
+    setUniform3(program, "lightIrradiance", p->intensity);
+    setUniform3(program, "towardLight", glm::dvec3(0, 0, 1));  // unread
+  } else if (const auto* d = std::get_if<scene::DirectionalLight>(&light)) {
+    program->SetUniformi("lightIsPoint", 0);
+    setUniform3(program, "towardLight", glm::normalize(d->towardLight));
+    setUniform3(program, "lightIrradiance", d->irradiance);
+    setUniform3(program, "lightPosition", glm::dvec3(0));  // unread
+  }
 }
 
 /// The map's render targets, sized `resolution` a side.
@@ -64,10 +82,10 @@ struct LightViewTargets {
 };
 
 /// The uniforms of light_view_map.{vert,frag}: the surface's millimetre frame, the map's frame and
-/// the directional light.
+/// the light (in millimetres).
 inline void setLightViewUniforms(vtkShaderProgram* program, const vtkLucentSurface& surface,
-                                 const atlas::LightViewFrame& frame, const glm::dvec3& towardLight,
-                                 const glm::dvec3& irradiance, float eta) {
+                                 const atlas::LightViewFrame& frame, const scene::Light& lightMm,
+                                 float eta) {
   setUniform3(program, "worldCentre",
               glm::dvec3(surface.GetCentre()[0], surface.GetCentre()[1], surface.GetCentre()[2]));
   program->SetUniformf("mmPerUnit", float(surface.GetMillimetresPerUnit()));
@@ -76,8 +94,7 @@ inline void setLightViewUniforms(vtkShaderProgram* program, const vtkLucentSurfa
   setUniform3(program, "mapB", frame.b);
   setUniform3(program, "mapAxis", frame.axis);
   program->SetUniformf("mapHalfExtent", float(frame.halfExtent));
-  setUniform3(program, "towardLight", glm::normalize(towardLight));
-  setUniform3(program, "lightIrradiance", irradiance);
+  setLightSourceUniforms(program, lightMm);
   program->SetUniformf("eta", eta);
   program->SetUniformf("maxObliquity", float(atlas::kMaxObliquity));
 }

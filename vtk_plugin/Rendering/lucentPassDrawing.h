@@ -26,7 +26,11 @@ inline std::string withSharedGlsl(const char* stage) {
   std::string source = stage;
   vtkShaderProgram::Substitute(source, "//LUCENT::Optics",
                                std::string(lucent::glsl::kConstants) + lucent::glsl::kOpticsGlsl);
-  vtkShaderProgram::Substitute(source, "//LUCENT::Light", lucent::glsl::kLightGlsl);
+  // LightSource before Light, whose marker is its prefix; light.glsl reads light_source.glsl.
+  vtkShaderProgram::Substitute(source, "//LUCENT::LightSource", lucent::glsl::kLightSourceGlsl);
+  vtkShaderProgram::Substitute(
+      source, "//LUCENT::Light",
+      std::string(lucent::glsl::kLightSourceGlsl) + lucent::glsl::kLightGlsl);
   vtkShaderProgram::Substitute(source, "//LUCENT::Voxel", lucent::glsl::kVoxelGlsl);
   vtkShaderProgram::Substitute(source, "//LUCENT::RingFilter", lucent::glsl::kRingFilterGlsl);
   vtkShaderProgram::Substitute(source, "//LUCENT::Display", lucent::glsl::kDisplayGlsl);

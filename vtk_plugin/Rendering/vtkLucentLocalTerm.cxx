@@ -68,16 +68,14 @@ bool vtkLucentLocalTerm::UploadFilter(vtkOpenGLRenderWindow* window, std::string
 }
 
 bool vtkLucentLocalTerm::RenderMap(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
-                                   const glm::dvec3& towardLight, const float irradiance[3],
-                                   float eta, std::string& error) {
-  const lucent::scene::DirectionalLight light{glm::normalize(towardLight), glm::dvec3(1.0)};
-  this->MapFrame = lucent::atlas::lightViewFrame(light, surface->GetMillimetreMesh().bounds());
+                                   const lucent::scene::Light& lightMm, float eta,
+                                   std::string& error) {
+  this->MapFrame = lucent::atlas::lightViewFrame(lightMm, surface->GetMillimetreMesh().bounds());
   this->Map.begin(window, this->MapResolution);
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
       this->LightViewVs.c_str(), this->LightViewFs.c_str(), "");
   if (program) {
-    setLightViewUniforms(program, *surface, this->MapFrame, towardLight,
-                         glm::dvec3(irradiance[0], irradiance[1], irradiance[2]), eta);
+    setLightViewUniforms(program, *surface, this->MapFrame, lightMm, eta);
     surface->Draw(program, vtkLucentSurface::LocalLightView);
   }
   this->Map.end();

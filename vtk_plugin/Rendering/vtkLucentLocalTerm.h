@@ -42,11 +42,10 @@ class vtkLucentLocalTerm : public vtkObject {
   /// What the split was built for (the global table's key).
   const std::string& GetKey() const { return this->BuiltKey; }
 
-  /// The translucent shadow map under the directional light: `irradiance` on a surface facing it,
-  /// in the surface's millimetre frame; false with @p error when the shader does not compile.
+  /// The translucent shadow map under the light (a point or directional light in the surface's
+  /// millimetre frame); false with @p error when the shader does not compile.
   bool RenderMap(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
-                 const glm::dvec3& towardLight, const float irradiance[3], float eta,
-                 std::string& error);
+                 const lucent::scene::Light& lightMm, float eta, std::string& error);
 
   /// Binds the map and the filter's tables and sets ring_filter.glsl's uniforms; Deactivate after
   /// drawing.

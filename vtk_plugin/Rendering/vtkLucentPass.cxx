@@ -212,8 +212,13 @@ struct vtkLucentPass::Internals {
 };
 
 struct vtkLucentPass::FrameSetup {
-  glm::dvec3 towardLight{0, 0, 1};
-  float irradiance[3] = {1, 1, 1};
+  glm::dvec3 towardLight{0, 0, 1};  ///< unit; for a point light, from its focal point to it
+  float irradiance[3] = {1, 1, 1};  ///< on a surface facing the light (at `reach` from a point)
+  /// A positional scene light: a point at `lightPosition` (world), its irradiance given at its
+  /// focal point, `reach` (world units) away.
+  bool pointLight = false;
+  glm::dvec3 lightPosition{0};
+  double reach = 1;
   lucent::optics::Material material;
   int atlasSize = 0, topLevel = 0, shadowSize = 0;
   int samples = 0, samplesPerRow = 0;  ///< tsis's, of the actor being shaded
@@ -221,6 +226,19 @@ struct vtkLucentPass::FrameSetup {
   float camera[3] = {};
   glm::mat4 worldToLight{1.0f};             ///< of the actor being shaded
   vtkLucentLocalTerm* localTerm = nullptr;  ///< the hybrid's, of the actor being shaded
+
+  /// The light in world coordinates (scale 1, no offset) or in a surface's millimetre frame, as
+  /// the CPU techniques take it.
+  lucent::scene::Light light(const glm::dvec3& centre = glm::dvec3(0), double mm = 1) const {
+    const glm::dvec3 e(irradiance[0], irradiance[1], irradiance[2]);
+    if (!pointLight) return lucent::scene::DirectionalLight{towardLight, e};
+    return lucent::scene::PointLight{(lightPosition - centre) * mm,
+                                     e * (reach * mm) * (reach * mm)};
+  }
+  lucent::scene::Light lightIn(const vtkLucentSurface& surface) const {
+    const double* c = surface.GetCentre();
+    return light(glm::dvec3(c[0], c[1], c[2]), surface.GetMillimetresPerUnit());
+  }
 };
 
 vtkLucentPass::vtkLucentPass() : Impl(new Internals) { this->RefreshAtlasKnobs(); }
@@ -434,6 +452,11 @@ bool vtkLucentPass::ResolveLight(vtkRenderer* renderer, FrameSetup& frame) {
           "vtkLucentPass: the light's position equals its focal point; give it a direction");
       return false;
     }
+    // A positional light is a point light (VTK's cone angle is not modelled): its irradiance is
+    // LightIrradiance x intensity at its focal point, falling off as 1 / d^2.
+    frame.pointLight = light->GetPositional() != 0;
+    frame.lightPosition = glm::dvec3(position[0], position[1], position[2]);
+    frame.reach = glm::length(towardLight);
   }
   frame.towardLight = glm::normalize(towardLight);
   for (int c = 0; c < 3; ++c) frame.irradiance[c] = float(scale * colour[c]);
@@ -473,18 +496,41 @@ bool vtkLucentPass::SetUpFrame(vtkRenderer* renderer, FrameSetup& frame) {
   return true;
 }
 
+bool vtkLucentPass::LightTransform(FrameSetup& frame, const double centreWorld[3], double radius) {
+  const glm::dvec3 centre(centreWorld[0], centreWorld[1], centreWorld[2]);
+  if (!frame.pointLight) {
+    const glm::dvec3 up =
+        std::abs(frame.towardLight.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+    frame.worldToLight =
+        glm::mat4(glm::ortho(-radius, radius, -radius, radius, 0.5 * radius, 3.5 * radius) *
+                  glm::lookAt(centre + 2.0 * radius * frame.towardLight, centre, up));
+    return true;
+  }
+  // A point light: a perspective view from it framing the object's bounding sphere.
+  const glm::dvec3 toCentre = centre - frame.lightPosition;
+  const double distance = glm::length(toCentre);
+  if (!(distance > 1.01 * radius)) {
+    this->ReportError(
+        "vtkLucentPass: the point light is inside (or at) the object's bounding sphere; its "
+        "shadow map cannot frame the object: move the light out, or make it directional "
+        "(PositionalOff, or set LightDirection)");
+    return false;
+  }
+  const glm::dvec3 axis = toCentre / distance;
+  const glm::dvec3 up = std::abs(axis.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+  const double halfAngle = std::asin(std::min(1.0, radius / distance));
+  const double nearPlane = std::max(distance - radius, 1e-3 * radius);
+  frame.worldToLight =
+      glm::mat4(glm::perspective(2.0 * halfAngle, 1.0, nearPlane, distance + radius) *
+                glm::lookAt(frame.lightPosition, centre, up));
+  return true;
+}
+
 bool vtkLucentPass::RenderLightDepth(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,
                                      FrameSetup& frame) {
   Internals& I = *this->Impl;
   vtkOpenGLState* state = window->GetState();
-  const glm::dvec3 centre(surface->GetCentre()[0], surface->GetCentre()[1],
-                          surface->GetCentre()[2]);
-  const double radius = surface->GetRadius();
-  const glm::dvec3 up =
-      std::abs(frame.towardLight.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
-  frame.worldToLight =
-      glm::mat4(glm::ortho(-radius, radius, -radius, radius, 0.5 * radius, 3.5 * radius) *
-                glm::lookAt(centre + 2.0 * radius * frame.towardLight, centre, up));
+  if (!this->LightTransform(frame, surface->GetCentre(), surface->GetRadius())) return false;
   beginDrawing(state, I.lightFbo, {}, I.lightDepth, frame.shadowSize, frame.shadowSize);
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthFunc(GL_LESS);
@@ -522,10 +568,7 @@ void vtkLucentPass::SetLightUniforms(vtkShaderProgram* program, const FrameSetup
   program->SetUniformi("lightDepth", I.lightDepth->GetTextureUnit());
   program->SetUniformMatrix4x4("worldToLight",
                                const_cast<float*>(glm::value_ptr(frame.worldToLight)));
-  const float toward[3] = {float(frame.towardLight.x), float(frame.towardLight.y),
-                           float(frame.towardLight.z)};
-  program->SetUniform3f("towardLight", toward);
-  program->SetUniform3f("lightIrradiance", frame.irradiance);
+  setLightSourceUniforms(program, frame.light());
   program->SetUniformf("eta", float(frame.material.eta));
   program->SetUniformf("shadowBias", 1.0f / float(frame.shadowSize));
 }
@@ -658,9 +701,7 @@ bool vtkLucentPass::ShadeTauLut(vtkOpenGLRenderWindow* window, const lt::Techniq
   scene.mesh = surface->GetMillimetreMesh();
   scene.vertexNormals = scene.mesh.vertexNormals();
   scene.medium.material = *lucent::optics::findMaterial(this->Material);  // SetUpFrame checked it
-  scene.lights = {lucent::scene::DirectionalLight{
-      frame.towardLight,
-      glm::dvec3(frame.irradiance[0], frame.irradiance[1], frame.irradiance[2])}};
+  scene.lights = {frame.lightIn(*surface)};
   scene.parallelFor = lucent::vtkadapter::smpFor;
   // Prepared again only when the geometry or a prepare knob changed; light and material are the
   // frame's.
@@ -795,12 +836,12 @@ bool vtkLucentPass::UpdateLocalTerm(vtkOpenGLRenderWindow* window, vtkLucentSurf
   if (!profile) profile = vtkSmartPointer<vtkLucentProfile>::New();
   std::string error;
   const double diagonal = surface->GetMillimetreMesh().bounds().diagonal();
-  const bool ok = local->Update(window, frame.material, knobs, diagonal, error) &&
-                  profile->UpdateTable(window, "hybrid Rd Wg " + local->GetKey(),
-                                       local->GetSplit()->tables.global,
-                                       local->GetSplit()->profile.exitScale, error) &&
-                  local->RenderMap(window, surface, frame.towardLight, frame.irradiance,
-                                   float(frame.material.eta), error);
+  const bool ok =
+      local->Update(window, frame.material, knobs, diagonal, error) &&
+      profile->UpdateTable(window, "hybrid Rd Wg " + local->GetKey(),
+                           local->GetSplit()->tables.global, local->GetSplit()->profile.exitScale,
+                           error) &&
+      local->RenderMap(window, surface, frame.lightIn(*surface), float(frame.material.eta), error);
   if (!ok) {
     this->ReportError("vtkLucentPass (hybrid): " + error);
     return false;
@@ -909,9 +950,7 @@ bool vtkLucentPass::PlanActor(vtkRenderer* renderer, vtkLucentSurface* surface,
       lt::SceneDescription scene;
       scene.mesh = surface->GetMillimetreMesh();
       scene.medium.material = frame.material;
-      scene.lights = {lucent::scene::DirectionalLight{
-          frame.towardLight,
-          glm::dvec3(frame.irradiance[0], frame.irradiance[1], frame.irradiance[2])}};
+      scene.lights = {frame.lightIn(*surface)};
       std::string innerKey;
       scene.inclusions = innerBodiesWithin(*surface, inner, innerKey);
       lucent::plan::Budget budget;

@@ -21,8 +21,9 @@
 ///  profile of tsis's `profile` knob: its radial table, or a dipole in closed form with rd=exact
 ///  (vtkLucentProfile);
 ///  4. the translucent radiance replaces the delegate's shading where the object is visible.
-/// The light is directional: LightDirection, or else the renderer's first switched-on light (from
-/// its position towards its focal point). GLSL: shaders/ (constants generated from
+/// The light: LightDirection (directional), or else the renderer's first switched-on light: from
+/// its position towards its focal point, and a point light at its position when it is positional
+/// (its irradiance given at its focal point). GLSL: shaders/ (constants generated from
 /// lucent/optics/constants.hpp). Built on a GL 3.2 core context; checked on Mesa llvmpipe.
 ///
 /// Usage, as with VTK's own passes:
@@ -187,6 +188,10 @@ class LUCENTRENDERING_EXPORT vtkLucentPass : public vtkImageProcessingPass {
   bool ShadeActors(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int width, int height);
   bool SetUpFrame(vtkRenderer* renderer, FrameSetup& frame);
   bool ResolveLight(vtkRenderer* renderer, FrameSetup& frame);
+  /// The light's view of an object (centre, radius in world units) for its depth map:
+  /// orthographic for a directional light, perspective from a point light; false (reported) when
+  /// a point light is inside the object's bounding sphere.
+  bool LightTransform(FrameSetup& frame, const double centre[3], double radius);
   void ClearTranslucentTargets(vtkOpenGLState* state, int width, int height);
   /// Stage 0: depth from the light, orthographic over the object's bounding sphere.
   bool RenderLightDepth(vtkOpenGLRenderWindow* window, vtkLucentSurface* surface,

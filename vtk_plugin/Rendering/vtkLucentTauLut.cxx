@@ -229,9 +229,7 @@ bool vtkLucentTauLut::RenderLightView(vtkOpenGLRenderWindow* window, vtkLucentSu
   vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
       this->LightViewVs.c_str(), this->LightViewFs.c_str(), "");
   if (program) {
-    const auto& light = std::get<lucent::scene::DirectionalLight>(scene.lights.front());
-    setLightViewUniforms(program, *surface, this->MapFrame, light.towardLight, light.irradiance,
-                         this->Eta);
+    setLightViewUniforms(program, *surface, this->MapFrame, scene.lights.front(), this->Eta);
     this->BindVoxelData(program);
     surface->Draw(program, vtkLucentSurface::TauLightView);
     this->UnbindVoxelData();
