@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -107,7 +108,10 @@ int main(int argc, char** argv) {
     const lt::Registry registry = lt::coreRegistry();
     std::vector<std::string> methods = args.all("method");
     if (methods.empty()) methods = {"tsis", "hybrid", "tsm", "taulut"};
-    const int frames = std::max(1, std::atoi(args.get("frames", "5").c_str()));
+    const double frameCount = lucent::cli::parseNumber(args.get("frames", "5"), "--frames");
+    if (frameCount < 1 || frameCount > 1000)
+      throw std::invalid_argument("--frames " + args.get("frames") + ": give 1 to 1000 frames");
+    const int frames = int(frameCount);
     const lt::KnobList knobs = lucent::cli::knobArgs(args, "knob");
     std::printf("%-10s %8s %14s %14s %10s %9s\n", "technique", "points", "view change s",
                 "light change s", "ratio", "reused");
