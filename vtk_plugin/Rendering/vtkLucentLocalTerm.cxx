@@ -26,9 +26,11 @@ bool vtkLucentLocalTerm::Update(vtkOpenGLRenderWindow* window,
                                 const lt::KnobValues& knobs, double diagonalMm,
                                 std::string& error) {
   this->MapResolution = int(knobs.integer("map"));
-  std::string key = material.name + " " + std::to_string(diagonalMm);
-  for (const char* name : {"profile", "c", "K", "rings", "ring-samples"})
-    key += std::string(" ") + name + "=" + knobs.text(name);
+  lucent::util::Fingerprint f;  // what the split reads: the material, the knobs, the diagonal
+  lt::detail::addMaterial(f, material);
+  lt::detail::addKnobs(f, knobs);
+  f.addValue(diagonalMm);
+  const std::string key = f.hex();
   if (this->Split && key == this->BuiltKey) return true;
   this->BuiltKey.clear();
   try {

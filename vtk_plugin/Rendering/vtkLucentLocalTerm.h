@@ -16,6 +16,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <lucent/technique/scene_fingerprint.hpp>
 #include <lucent/technique/texture_space.hpp>
 
 #include "lucentLightViewMap.h"

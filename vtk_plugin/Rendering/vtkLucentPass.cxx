@@ -35,6 +35,7 @@
 #include <lucent/optics/materials.hpp>
 #include <lucent/plan/calibration.hpp>
 #include <lucent/technique/core_techniques.hpp>
+#include <lucent/technique/scene_fingerprint.hpp>
 
 #include "lucentPassDrawing.h"
 #include "lucentPassPlanner.h"
@@ -942,8 +943,9 @@ bool vtkLucentPass::PlanActor(vtkRenderer* renderer, vtkLucentSurface* surface,
     std::string key = viewKey(view, frame.towardLight) + " " +
                       std::to_string(surface->GetBuildCount()) + " " + frame.material.name + " " +
                       std::to_string(this->MaxError) + " " + std::to_string(this->AtlasResolution);
-    for (int c = 0; c < 3; ++c)
-      key += " " + std::to_string(frame.towardLight[c]) + " " + std::to_string(frame.irradiance[c]);
+    lucent::util::Fingerprint light;  // a directional or a point light, as the plan reads it
+    lt::detail::addLight(light, frame.lightIn(*surface));
+    key += " " + light.hex();
     for (vtkActor* actor : inner) key += innerBodyKey(actor);
     auto& [plannedFor, plan] = I.plans[surface];
     if (plannedFor != key || !plan.twin) {

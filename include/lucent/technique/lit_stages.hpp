@@ -24,7 +24,7 @@ inline std::string litKey(const SceneDescription& scene, const KnobValues& knobs
   util::Fingerprint f;
   for (const auto& light : scene.lights) detail::addLight(f, light);
   detail::addMaterial(f, scene.medium.material);
-  for (const auto& spec : knobs.specs()) f.add(spec.name).add(knobs.text(spec.name));
+  detail::addKnobs(f, knobs);
   return f.hex();
 }
 
