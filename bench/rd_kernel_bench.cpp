@@ -1,7 +1,9 @@
 // Benchmark: cost of one Rd evaluation in the brute-force truth's inner loop, the vectorised float
 // kernel (with whatever clone the CPU selects) against the scalar double path with std::exp,
 // measured in the same run, and how far apart their sums are; the float kernel's flop rate against
-// this machine's FMA peak, measured in the same process (roofline.hpp).
+// this machine's FMA peak, measured in the same process (roofline.hpp). Then the radial-table sum
+// of tsis, the hybrid and tsm: per-channel gathers against one node record a term (AVX-512), in
+// the same run.
 //   build/bench/rd_kernel_bench
 #include <chrono>
 #include <cstdio>
@@ -13,6 +15,7 @@
 
 #include <lucent/optics/materials.hpp>
 #include <lucent/reference/dipole_truth.hpp>
+#include <lucent/reference/radial_table_sum.hpp>
 #include <lucent/scene/shapes.hpp>
 
 using namespace lucent;
@@ -39,6 +42,61 @@ struct NothingOccludes final : scene::RayCaster {
 constexpr double kFlopsPerEvaluation = 8 + 3 * 68;
 /// Of those, the square roots and divisions (6 each), which the FMA peak does not bound.
 constexpr double kSqrtAndDivPerEvaluation = 12;
+
+/// Float operations of one term of the radial-table sum (radial_table_sum.hpp), counted from the
+/// source as above: offset and r^2 8; u = sqrt(sqrt(r^2)) scale 3; the node and its fraction 4;
+/// per channel (x3) the lerp as an FMA 2, the range mask 1, times w 1, into the sum 1: 30.
+constexpr double kFlopsPerTableTerm = 30;
+
+/// ns per term of the radial-table sum over `samples` (the truth's samples, weights 1) at `points`
+/// shading points, by `sum`; and the total, to compare paths.
+template <class Sum>
+std::pair<double, double> nsPerTableTerm(const reference::SurfaceSamples& samples, int points,
+                                         const reference::PlanarRadialTable& table, Sum sum) {
+  std::vector<float> x, y, z, w(samples.size(), 1.0f);
+  for (const auto& p : samples.position)
+    x.push_back(float(p.x)), y.push_back(float(p.y)), z.push_back(float(p.z));
+  const reference::RdKernelSamples s{x.data(), y.data(), z.data(), w.data(),
+                                     w.data(), w.data(), x.size()};
+  double total = 0;
+  const auto start = std::chrono::steady_clock::now();
+  for (int k = 0; k < points; ++k) {
+    double out[3] = {0, 0, 0};
+    sum(s, table, float(0.01 * k), float(0.02 * k), 0.5f, out);
+    total += out[0] + out[1] + out[2];
+  }
+  const double sec =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return {sec / points / double(s.n) * 1e9, total};
+}
+
+void tableSumFigures(const reference::SurfaceSamples& samples, double peak1) {
+  const optics::Material m = *optics::findMaterial("skin1");
+  const auto d = optics::Dipole<float>::make(optics::Rgb<float>(m.sigmaA),
+                                             optics::Rgb<float>(m.sigmaSPrime), float(m.eta));
+  const reference::PlanarRadialTable table(optics::RdTable<float>(d, 30.0f));
+  const int points = 2000;
+  const auto gathered = nsPerTableTerm(
+      samples, points, table, [](auto& s, auto& t, float x, float y, float z, double* out) {
+        reference::radialTableSumGathered(s, t, x, y, z, 0, s.n, out);
+      });
+  const auto best = nsPerTableTerm(samples, points, table, reference::radialTableSum);
+  std::printf("table sum    : %zu nodes, %d shading points, one thread\n", table.size(), points);
+  std::printf("  gathers    : %6.2f ns a term, %.1f GFLOP/s (%.0f %% of the FMA peak)\n",
+              gathered.first, kFlopsPerTableTerm / gathered.first,
+              100 * kFlopsPerTableTerm / gathered.first / peak1);
+  std::printf(
+      "  this CPU's : %6.2f ns a term, %.1f GFLOP/s (%.0f %% of the FMA peak), %.2fx; "
+      "totals differ by %.1e relative (%s)\n",
+      best.first, kFlopsPerTableTerm / best.first, 100 * kFlopsPerTableTerm / best.first / peak1,
+      gathered.first / best.first, std::abs(best.second / gathered.second - 1),
+#if LUCENT_HAS_AVX512_TABLE_SUM
+      reference::cpuHasAvx512() ? "AVX-512 node records" : "the same gathers"
+#else
+      "the same gathers"
+#endif
+  );
+}
 
 template <class T>
 std::pair<double, glm::dvec3> nsPerEvaluation(const reference::SurfaceSamples& samples,
@@ -81,5 +139,6 @@ int main() {
       "float kernel : %.0f flops per evaluation (%.0f of them sqrt or division): %.1f GFLOP/s, "
       "%.0f %% of the 1-thread FMA peak\n",
       kFlopsPerEvaluation, kSqrtAndDivPerEvaluation, achieved, 100 * achieved / peak1);
+  tableSumFigures(samples, peak1);
   return 0;
 }
