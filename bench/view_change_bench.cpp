@@ -95,7 +95,9 @@ int main(int argc, char** argv) {
   try {
     std::vector<lucent::cli::OptionSpec> specs = lucent::cli::sceneOptionSpecs();
     specs.push_back({"method", "NAME",
-                     "a technique to time (repeatable; default tsis, hybrid, tsm, taulut)", true});
+                     "a technique to time (repeatable; default: every technique that keeps its "
+                     "light stages; one that does not, e.g. a baseline, builds every frame)",
+                     true});
     specs.push_back({"knob", "NAME=VALUE", "a knob of every method timed (repeatable)", true});
     specs.push_back({"frames", "N", "view changes and light changes each (default 5)"});
     Args args("view_change_bench", "view_change_bench [options]", specs);
@@ -107,7 +109,9 @@ int main(int argc, char** argv) {
     lucent::cli::Scene scene = lucent::cli::buildScene(args);
     const lt::Registry registry = lt::coreRegistry();
     std::vector<std::string> methods = args.all("method");
-    if (methods.empty()) methods = {"tsis", "hybrid", "tsm", "taulut"};
+    if (methods.empty())
+      for (const lt::Technique& t : registry.all())
+        if (t.capabilities.keepsLightStages) methods.push_back(t.name);
     const double frameCount = lucent::cli::parseNumber(args.get("frames", "5"), "--frames");
     if (frameCount < 1 || frameCount > 1000)
       throw std::invalid_argument("--frames " + args.get("frames") + ": give 1 to 1000 frames");

@@ -27,6 +27,7 @@ std::vector<std::pair<const char*, bool>> flags(const Capabilities& c) {
           {"dynamic_light", c.dynamicLight},
           {"dynamic_material", c.dynamicMaterial},
           {"dynamic_shape", c.dynamicShape},
+          {"keeps_light_stages", c.keepsLightStages},
           {"per_pixel", c.perPixel},
           {"per_vertex", c.perVertex},
           {"needs_camera", c.needsCamera},

@@ -46,6 +46,9 @@ struct Capabilities {
   bool dynamicLight = true;
   bool dynamicMaterial = true;
   bool dynamicShape = false;
+  /// A frame keeps what it built from the lights, material and knobs (lit_stages.hpp), so a view
+  /// change only evaluates.
+  bool keepsLightStages = false;
   ///@}
   ///@{ Where it produces radiance: any surface point (per pixel), mesh vertices, or only along
   /// camera rays.

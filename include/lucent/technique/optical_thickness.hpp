@@ -204,6 +204,7 @@ inline Technique taulutTechnique() {
   t.capabilities.singleScattering = true;
   t.capabilities.multipleScattering = false;
   t.capabilities.gpuTwin = "vtkLucentPass";
+  t.capabilities.keepsLightStages = true;
   // The pass prepares on the CPU and uploads the grid and table as textures; its per-pixel loop
   // holds at most 16 rings (shaders/taulut_shade.frag) and its maps are RGBA32F (4096^2: 256 MiB).
   t.capabilities.gpuTwinKnobs = {{"voxels", 1024}, {"storage"},   {"precision"}, {"cluster", 64},

@@ -306,6 +306,7 @@ inline Capabilities textureSpaceCapabilities() {
   Capabilities c;
   c.precomputeScaling = "O(triangles + atlas texels)";
   c.frameScaling = "O(atlas texels + points x samples)";
+  c.keepsLightStages = true;
   return c;
 }
 
