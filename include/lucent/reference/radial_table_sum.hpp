@@ -8,6 +8,7 @@
 /// (radial_table_sum_avx512.hpp); elsewhere it gathers per channel, cloned for AVX2 like the
 /// truth's kernel.
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -64,7 +65,7 @@ LUCENT_VECTOR_CLONES inline void radialTableSumGathered(const RdKernelSamples& s
       const float u =
           std::sqrt(std::sqrt(dx * dx + dy * dy + dz * dz)) * scale;  // sqrt(r / rMax) * last
       const float inside = u < limit ? 1.0f : 0.0f;                   // 0 beyond rMax
-      const float uc = std::min(u, limit);
+      const float uc = std::min(limit, u);  // NaN -> limit (and inside = 0), as on AVX-512
       const int k = std::min(int(uc), last - 1);
       const float f = uc - float(k);
       s0 += inside * w0[i] * (t0[k] + f * (t0[k + 1] - t0[k]));
@@ -78,6 +79,7 @@ LUCENT_VECTOR_CLONES inline void radialTableSumGathered(const RdKernelSamples& s
 /// B(x_o) into out, by the fastest path this CPU has.
 inline void radialTableSum(const RdKernelSamples& s, const PlanarRadialTable& table, float ox,
                            float oy, float oz, double out[3]) {
+  assert(table.size() >= 2 && "a radial table needs two nodes to interpolate");
   out[0] = out[1] = out[2] = 0;
   std::size_t done = 0;
 #if LUCENT_HAS_AVX512_TABLE_SUM

@@ -11,7 +11,7 @@
 #include "radial_table_node.hpp"
 #include "rd_sum_kernel.hpp"
 
-#if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__)
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__) && !defined(_MSC_VER)
 #define LUCENT_HAS_AVX512_TABLE_SUM 1
 #include <immintrin.h>
 #else
@@ -77,8 +77,8 @@ LUCENT_AVX512 inline void loadNodes16(const RadialTableNode* nodes, const int k[
   static constexpr LaneIndices kRound3[2] = {fieldOfSixteenTerms(0), fieldOfSixteenTerms(1)};
   __m512 pair[8];  // terms 2m and 2m + 1, a record a half
   for (int m = 0; m < 8; ++m)
-    pair[m] = _mm512_insertf32x8(_mm512_castps256_ps512(_mm256_load_ps(nodes[k[2 * m]].value)),
-                                 _mm256_load_ps(nodes[k[2 * m + 1]].value), 1);
+    pair[m] = _mm512_insertf32x8(_mm512_castps256_ps512(_mm256_loadu_ps(nodes[k[2 * m]].value)),
+                                 _mm256_loadu_ps(nodes[k[2 * m + 1]].value), 1);
   __m512 low[4], high[4];  // fields 0-3 and 4-7 of terms 4q..4q+3
   for (int q = 0; q < 4; ++q) {
     low[q] = _mm512_permutex2var_ps(pair[2 * q], lanes(kRound1[0]), pair[2 * q + 1]);
