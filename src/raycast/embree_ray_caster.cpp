@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace lucent::raycast {
 
@@ -16,22 +17,28 @@ struct EmbreeRayCaster::Impl {
 
 namespace {
 float toRayLimit(double t) {
-  return t >= double(std::numeric_limits<float>::max()) ? std::numeric_limits<float>::infinity() : float(t);
+  return t >= double(std::numeric_limits<float>::max()) ? std::numeric_limits<float>::infinity()
+                                                        : float(t);
 }
 }  // namespace
 
-EmbreeRayCaster::EmbreeRayCaster(const scene::TriangleMesh& mesh) : mImpl(std::make_unique<Impl>()) {
+EmbreeRayCaster::EmbreeRayCaster(const scene::TriangleMesh& mesh)
+    : mImpl(std::make_unique<Impl>()) {
   mImpl->device = rtcNewDevice(nullptr);
-  if (!mImpl->device) throw std::runtime_error("Embree: could not create a device (error " + std::to_string(rtcGetDeviceError(nullptr)) + ")");
+  if (!mImpl->device)
+    throw std::runtime_error("Embree: could not create a device (error " +
+                             std::to_string(rtcGetDeviceError(nullptr)) + ")");
   mImpl->scene = rtcNewScene(mImpl->device);
   rtcSetSceneFlags(mImpl->scene, RTC_SCENE_FLAG_ROBUST);
   RTCGeometry geom = rtcNewGeometry(mImpl->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                               3 * sizeof(float), mesh.positions.size()));
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                               RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                               mesh.positions.size()));
   for (std::size_t i = 0; i < mesh.positions.size(); ++i)
     for (int k = 0; k < 3; ++k) vertices[3 * i + k] = mesh.positions[i][k];
-  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                 3 * sizeof(unsigned), mesh.triangles.size()));
+  auto* indices = static_cast<unsigned*>(
+      rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                              3 * sizeof(unsigned), mesh.triangles.size()));
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) indices[3 * t + k] = mesh.triangles[t][k];
   rtcCommitGeometry(geom);
@@ -45,8 +52,8 @@ EmbreeRayCaster::~EmbreeRayCaster() {
   if (mImpl->device) rtcReleaseDevice(mImpl->device);
 }
 
-std::optional<scene::RayHit> EmbreeRayCaster::intersect(const glm::dvec3& o, const glm::dvec3& d, double tMin,
-                                                        double tMax) const {
+std::optional<scene::RayHit> EmbreeRayCaster::intersect(const glm::dvec3& o, const glm::dvec3& d,
+                                                        double tMin, double tMax) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rh{};
@@ -62,17 +69,39 @@ std::optional<scene::RayHit> EmbreeRayCaster::intersect(const glm::dvec3& o, con
   return scene::RayHit{double(rh.ray.tfar), rh.hit.primID, double(rh.hit.u), double(rh.hit.v)};
 }
 
-bool EmbreeRayCaster::occluded(const glm::dvec3& o, const glm::dvec3& d, double tMin, double tMax) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+namespace {
+RTCRay embreeRay(const glm::dvec3& o, const glm::dvec3& d, double tMin, double tMax) {
   RTCRay ray{};
   ray.org_x = float(o.x), ray.org_y = float(o.y), ray.org_z = float(o.z);
   ray.dir_x = float(d.x), ray.dir_y = float(d.y), ray.dir_z = float(d.z);
   ray.tnear = float(tMin);
   ray.tfar = toRayLimit(tMax);
   ray.mask = 0xffffffffu;
+  return ray;
+}
+bool hitSomething(const RTCRay& ray) { return ray.tfar < 0; }  // Embree sets tfar to -inf on a hit
+}  // namespace
+
+bool EmbreeRayCaster::occluded(const glm::dvec3& o, const glm::dvec3& d, double tMin,
+                               double tMax) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray = embreeRay(o, d, tMin, tMax);
   rtcOccluded1(mImpl->scene, &context, &ray);
-  return ray.tfar < 0;  // Embree sets tfar to -inf on a hit
+  return hitSomething(ray);
+}
+
+void EmbreeRayCaster::occludedMany(const scene::ShadowRay* rays, std::size_t n,
+                                   bool* blocked) const {
+  if (n == 0) return;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  std::vector<RTCRay> stream(n);
+  for (std::size_t i = 0; i < n; ++i)
+    stream[i] = embreeRay(rays[i].origin, rays[i].direction, 0, rays[i].tMax);
+  rtcOccluded1M(mImpl->scene, &context, stream.data(), unsigned(n), sizeof(RTCRay));
+  for (std::size_t i = 0; i < n; ++i) blocked[i] = hitSomething(stream[i]);
 }
 
 }  // namespace lucent::raycast

@@ -1,6 +1,7 @@
 #pragma once
 /// @file embree_ray_caster.hpp
-/// @brief scene::RayCaster on Embree 3: a BVH over the mesh, thread-safe single-ray queries.
+/// @brief scene::RayCaster on Embree 3: a BVH over the mesh, thread-safe single-ray queries and
+/// ray streams.
 #include <memory>
 
 #include <lucent/scene/mesh.hpp>
@@ -15,9 +16,12 @@ class EmbreeRayCaster final : public scene::RayCaster {
   EmbreeRayCaster(const EmbreeRayCaster&) = delete;
   EmbreeRayCaster& operator=(const EmbreeRayCaster&) = delete;
 
-  std::optional<scene::RayHit> intersect(const glm::dvec3& origin, const glm::dvec3& direction, double tMin,
-                                         double tMax) const override;
-  bool occluded(const glm::dvec3& origin, const glm::dvec3& direction, double tMin, double tMax) const override;
+  std::optional<scene::RayHit> intersect(const glm::dvec3& origin, const glm::dvec3& direction,
+                                         double tMin, double tMax) const override;
+  bool occluded(const glm::dvec3& origin, const glm::dvec3& direction, double tMin,
+                double tMax) const override;
+  /// The rays as one coherent stream (rtcOccluded1M), which Embree traces in packets.
+  void occludedMany(const scene::ShadowRay* rays, std::size_t n, bool* blocked) const override;
 
  private:
   struct Impl;

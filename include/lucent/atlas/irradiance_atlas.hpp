@@ -6,6 +6,7 @@
 /// texel stores its power E' x (texel area) = E(x_texel) A_S / n_T, n_T the texels its triangle
 /// owns, so that the sum over texels is the quadrature of the surface integral of E: this sum is
 /// E'_avg of Eq. 9-11.
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -118,26 +119,41 @@ inline std::shared_ptr<const AtlasSurface> buildAtlasSurface(
 }
 
 /// E' into the atlas (Eq. 7), with shadows: what a frame redoes when the light changes.
+/// @param recycled an earlier atlas whose buffers this one reuses (a frame after a light change
+/// would otherwise page-fault 16 MB of fresh memory in: 0.04 s of the hybrid's 0.24 s frame).
 inline IrradianceAtlas lightAtlas(const std::shared_ptr<const AtlasSurface>& surface,
                                   const std::vector<scene::Light>& lights,
                                   const scene::RayCaster& caster,
                                   const scene::IrradianceSettings& irr,
                                   const util::ParallelFor& parallelFor = util::serialFor,
-                                  const util::Progress& progress = {}) {
+                                  const util::Progress& progress = {},
+                                  IrradianceAtlas recycled = {}) {
   const AtlasSurface& s = *surface;
   const std::size_t texels = std::size_t(s.resolution) * std::size_t(s.resolution);
-  IrradianceAtlas out;
+  IrradianceAtlas out = std::move(recycled);  // its buffers, refilled: no fresh pages to fault in
+  out.totalPower = glm::dvec3(0);
   out.resolution = s.resolution;
   out.surface = surface;
   out.power.assign(texels, glm::vec3(0));
   out.importance.assign(texels, 0.0f);
   std::atomic<std::size_t> done{0};
+  // Owned texels in atlas order, kShadowStream at a time: neighbours' shadow rays toward a light
+  // are nearly parallel, so the caster traces them as packets (scene::irradianceMany).
+  constexpr std::size_t kShadowStream = 1024;
   parallelFor(s.owned.size(), [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) {
-      const std::size_t i = s.owned[k];
-      const glm::dvec3 e = scene::irradianceAt(glm::dvec3(s.position[i]), glm::dvec3(s.normal[k]),
-                                               glm::dvec3(s.faceNormal[k]), lights, caster, irr, i);
-      out.power[i] = glm::vec3(e * double(s.area[k]));
+    glm::dvec3 e[kShadowStream];
+    for (std::size_t first = begin; first < end; first += kShadowStream) {
+      const std::size_t n = std::min(kShadowStream, end - first);
+      scene::irradianceMany(
+          n,
+          [&](std::size_t j) {
+            const std::size_t k = first + j, i = s.owned[k];
+            return scene::SurfacePoint{glm::dvec3(s.position[i]), glm::dvec3(s.normal[k]),
+                                       glm::dvec3(s.faceNormal[k]), i};
+          },
+          lights, caster, irr, e);
+      for (std::size_t j = 0; j < n; ++j)
+        out.power[s.owned[first + j]] = glm::vec3(e[j] * double(s.area[first + j]));
     }
     if (progress) progress(double(done += end - begin) / double(s.owned.size()));
   });

@@ -2,6 +2,7 @@
 /// @file ray_caster.hpp
 /// @brief The ray-casting interface the core uses for visibility; implemented with Embree in
 /// src/raycast.
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -17,6 +18,12 @@ struct RayHit {
   double u = 0, v = 0;  ///< barycentrics of vertices 1 and 2
 };
 
+/// A visibility query: is anything hit with t in (0, tMax) from origin along the unit direction?
+struct ShadowRay {
+  glm::dvec3 origin{0}, direction{0, 0, 1};
+  double tMax = std::numeric_limits<double>::infinity();
+};
+
 class RayCaster {
  public:
   virtual ~RayCaster() = default;
@@ -26,6 +33,13 @@ class RayCaster {
   /// Whether anything is hit with t in (tMin, tMax). Thread-safe.
   virtual bool occluded(const glm::dvec3& origin, const glm::dvec3& direction, double tMin,
                         double tMax) const = 0;
+  /// occluded(ray.origin, ray.direction, 0, ray.tMax) for n rays at once, into blocked[0, n): a
+  /// caster may trace them as a stream (Embree's packets), which pays when they are coherent, e.g.
+  /// the shadow rays of neighbouring texels toward one light. Thread-safe.
+  virtual void occludedMany(const ShadowRay* rays, std::size_t n, bool* blocked) const {
+    for (std::size_t i = 0; i < n; ++i)
+      blocked[i] = occluded(rays[i].origin, rays[i].direction, 0, rays[i].tMax);
+  }
 };
 
 /// Whether p lies inside the closed surface `caster` holds: an odd number of crossings along a

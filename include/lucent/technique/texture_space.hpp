@@ -104,13 +104,16 @@ inline std::shared_ptr<const atlas::AtlasSurface> buildAtlas(const SceneDescript
   return surface;
 }
 
-/// Irradiance into the atlas and the N importance samples (a frame's first stages).
+/// Irradiance into the atlas and the N importance samples (a frame's first stages). The atlas is
+/// left in `scratch`, whose buffers the next light change refills.
 inline atlas::ImportanceSamples drawSamples(
     const std::shared_ptr<const atlas::AtlasSurface>& surface, const SceneDescription& scene,
-    const KnobValues& knobs, Statistics& stats) {
-  const auto irradiance = stats.timeFrame("irradiance", [&] {
+    const KnobValues& knobs, Statistics& stats, atlas::IrradianceAtlas& scratch) {
+  atlas::IrradianceAtlas& irradiance = scratch;
+  irradiance = stats.timeFrame("irradiance", [&] {
     return atlas::lightAtlas(surface, scene.lights, *scene.caster, irradianceSettings(scene, knobs),
-                             scene.parallelFor, scene.stage("irradiance atlas"));
+                             scene.parallelFor, scene.stage("irradiance atlas"),
+                             std::move(scratch));
   });
   stats.figures["transmitted_power"] =
       irradiance.totalPower.x + irradiance.totalPower.y + irradiance.totalPower.z;
@@ -207,8 +210,8 @@ struct HybridSplit {
 /// profile's table (or its closed form with rd=exact).
 inline atlas::TsisEvaluator tsisEvaluator(const std::shared_ptr<const atlas::AtlasSurface>& atlas,
                                           const SceneDescription& scene, const KnobValues& knobs,
-                                          Statistics& stats) {
-  atlas::ImportanceSamples samples = drawSamples(atlas, scene, knobs, stats);
+                                          Statistics& stats, atlas::IrradianceAtlas& scratch) {
+  atlas::ImportanceSamples samples = drawSamples(atlas, scene, knobs, stats, scratch);
   const auto profile = profileOf<float>(scene.medium.material, knobs);
   const RdLookup lookup = rdLookupOf(knobs);
   if (lookup.closedForm) return atlas::TsisEvaluator(std::move(samples), profile);
@@ -225,7 +228,7 @@ class Tsis final : public Prepared {
   FrameResult frame(const SceneDescription& scene, const ShadeRequest& request,
                     Statistics& stats) override {
     const atlas::TsisEvaluator& eval = mLit.get(scene, mKnobs, stats, [&](Statistics& s) {
-      return tsisEvaluator(mAtlas, scene, mKnobs, s);
+      return tsisEvaluator(mAtlas, scene, mKnobs, s, mIrradiance);
     });
     FrameResult out;
     out.radiosity = evaluate(eval, scene, request, mKnobs, stats, mLit.vertexCache());
@@ -235,6 +238,7 @@ class Tsis final : public Prepared {
 
  private:
   std::shared_ptr<const atlas::AtlasSurface> mAtlas;
+  atlas::IrradianceAtlas mIrradiance;  ///< the last frame's, whose buffers the next one refills
   LitStages<atlas::TsisEvaluator> mLit;
 };
 
@@ -259,17 +263,18 @@ class Hybrid final : public Prepared {
     atlas::TsisEvaluator global;
     double exitScale;
   };
-  Lit build(const SceneDescription& scene, Statistics& stats) const {
+  Lit build(const SceneDescription& scene, Statistics& stats) {
     HybridSplit split(scene.medium.material, mKnobs, scene.mesh.bounds().diagonal(), stats);
     const float eta = float(scene.medium.material.eta);
     atlas::LocalTermEvaluator local(shadowMaps(scene, mKnobs, stats), std::move(split.ring),
                                     split.tables.local, eta);
-    atlas::TsisEvaluator global(drawSamples(mAtlas, scene, mKnobs, stats), split.tables.global,
-                                eta);
+    atlas::TsisEvaluator global(drawSamples(mAtlas, scene, mKnobs, stats, mIrradiance),
+                                split.tables.global, eta);
     return {std::move(local), std::move(global), split.profile.exitScale};
   }
 
   std::shared_ptr<const atlas::AtlasSurface> mAtlas;
+  atlas::IrradianceAtlas mIrradiance;  ///< the last frame's, whose buffers the next one refills
   LitStages<Lit> mLit;
 };
 

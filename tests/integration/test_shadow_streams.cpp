@@ -1,0 +1,106 @@
+// Shadow rays cast as streams (RayCaster::occludedMany, scene::irradianceMany, the atlas's
+// irradiance) give what one ray at a time gives: the same terms in the same order, and Embree's
+// stream traversal the same answers as its single-ray one.
+#include <doctest/doctest.h>
+
+#include <memory>
+#include <vector>
+
+#include <lucent/reference/surface_samples.hpp>
+#include <lucent/scene/irradiance.hpp>
+#include <lucent/scene/shapes.hpp>
+
+#include "small_scene.hpp"
+
+using namespace lucent;
+
+namespace {
+/// The inner caster's single-ray queries only (occludedMany falls back to occluded).
+class OneRayAtATime final : public scene::RayCaster {
+ public:
+  explicit OneRayAtATime(const scene::RayCaster& inner) : mInner(inner) {}
+  std::optional<scene::RayHit> intersect(const glm::dvec3& o, const glm::dvec3& d, double tMin,
+                                         double tMax) const override {
+    return mInner.intersect(o, d, tMin, tMax);
+  }
+  bool occluded(const glm::dvec3& o, const glm::dvec3& d, double tMin, double tMax) const override {
+    return mInner.occluded(o, d, tMin, tMax);
+  }
+
+ private:
+  const scene::RayCaster& mInner;
+};
+
+/// Every kind of light, from directions where a torus shadows itself; a point light on the
+/// surface (zero distance at one point) and one behind everything.
+std::vector<scene::Light> everyKindOfLight(const reference::SurfaceSamples& s) {
+  scene::EnvironmentLight sky;
+  sky.width = sky.height = 1;
+  sky.radiance = {glm::vec3(0.5f, 0.25f, 0.125f)};
+  return {scene::PointLight{glm::dvec3(0, 30, -10), glm::dvec3(900)},
+          scene::DirectionalLight{glm::normalize(glm::dvec3(1, 0.1, 0.2)), glm::dvec3(0.7)}, sky,
+          scene::PointLight{s.position[0], glm::dvec3(1)},
+          scene::DirectionalLight{glm::dvec3(0, -1, 0), glm::dvec3(0.3)}};
+}
+}  // namespace
+
+TEST_CASE("Shadow streams: irradianceMany equals irradianceAt point by point, every light kind") {
+  const test::SmallScene scene(scene::shapes::torus(), 20.0, 8);
+  const auto samples = reference::buildSurfaceSamples(scene.mesh, 0.4);
+  REQUIRE(samples.size() > 1000);
+  const auto lights = everyKindOfLight(samples);
+  scene::IrradianceSettings irr = scene.irr;
+  irr.environmentStrata = 3;
+  const auto pointAt = [&](std::size_t i) {
+    return scene::SurfacePoint{samples.position[i], samples.normal[i], samples.faceNormal[i], i};
+  };
+  const OneRayAtATime single(*scene.caster);
+  std::vector<glm::dvec3> bySingle(samples.size()), byStream(samples.size());
+  scene::irradianceMany(samples.size(), pointAt, lights, single, irr, bySingle.data());
+  scene::irradianceMany(samples.size(), pointAt, lights, *scene.caster, irr, byStream.data());
+  std::size_t shadowed = 0, lit = 0, streamDiffers = 0;
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const glm::dvec3 e = scene::irradianceAt(samples.position[i], samples.normal[i],
+                                             samples.faceNormal[i], lights, *scene.caster, irr, i);
+    CHECK(bySingle[i] == e);  // the same terms added in the same order: equal to the last bit
+    streamDiffers += byStream[i] != e;
+    // Whether the directional key light reaches the point, one ray at a time, to show that the
+    // scene has shadowed and lit points.
+    const auto term = scene::detail::shadowedTerm(lights[1], samples.position[i], samples.normal[i],
+                                                  samples.faceNormal[i], irr.eta);
+    if (term)
+      (scene.caster->occluded(term->ray.origin, term->ray.direction, 0, term->ray.tMax) ? shadowed
+                                                                                        : lit)++;
+  }
+  CHECK(shadowed > 50);
+  CHECK(lit > 50);
+  CHECK(streamDiffers == 0);  // Embree's stream traversal answers as its single rays do here
+}
+
+TEST_CASE("Shadow streams: Embree's occludedMany answers each ray as occluded does") {
+  const test::SmallScene scene(scene::shapes::torus(), 20.0, 8);
+  // Rays from just off the surface in directions all around: into the torus (hit at once), across
+  // its hole, away from it; a third with a reach of 2 mm that can stop short of what they would
+  // hit.
+  const auto samples = reference::buildSurfaceSamples(scene.mesh, 0.5);
+  std::vector<scene::ShadowRay> rays;
+  for (std::size_t i = 0; i < samples.size() && rays.size() < 4000; i += 3) {
+    const double a = 0.37 * double(i), b = 0.11 * double(i);
+    const glm::dvec3 dir = glm::normalize(glm::dvec3(
+        std::cos(a) * std::sin(b + 0.2), std::cos(b + 0.2), std::sin(a) * std::sin(b + 0.2)));
+    rays.push_back({samples.position[i] + 1e-3 * samples.faceNormal[i], dir,
+                    i % 9 == 0 ? 2.0 : std::numeric_limits<double>::infinity()});
+  }
+  REQUIRE(rays.size() > 1000);
+  std::unique_ptr<bool[]> blocked(new bool[rays.size()]);
+  scene.caster->occludedMany(rays.data(), rays.size(), blocked.get());
+  std::size_t hits = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const bool one = scene.caster->occluded(rays[i].origin, rays[i].direction, 0, rays[i].tMax);
+    CHECK(blocked[i] == one);
+    hits += one;
+  }
+  CHECK(hits > rays.size() / 10);
+  CHECK(hits < rays.size() * 9 / 10);
+  scene.caster->occludedMany(rays.data(), 0, blocked.get());  // no rays: nothing to do
+}
