@@ -21,22 +21,6 @@ namespace {
 namespace lt = lucent::technique;
 using lucent::scene::RayCaster;
 
-/// The caster's single-ray queries only: occludedMany falls back to one occluded() a ray.
-class OneRayAtATime final : public RayCaster {
- public:
-  explicit OneRayAtATime(const RayCaster& inner) : mInner(inner) {}
-  std::optional<lucent::scene::RayHit> intersect(const glm::dvec3& o, const glm::dvec3& d,
-                                                 double tMin, double tMax) const override {
-    return mInner.intersect(o, d, tMin, tMax);
-  }
-  bool occluded(const glm::dvec3& o, const glm::dvec3& d, double tMin, double tMax) const override {
-    return mInner.occluded(o, d, tMin, tMax);
-  }
-
- private:
-  const RayCaster& mInner;
-};
-
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
@@ -62,7 +46,7 @@ int main(int argc, char** argv) {
     lt::Statistics stats;
     const auto surface = lt::detail::buildAtlas(scene, knobs, stats);
     const auto settings = lt::detail::irradianceSettings(scene, knobs);
-    const OneRayAtATime single(*scene.caster);
+    const lucent::scene::OneRayAtATime single(*scene.caster);
     const auto light = [&](const RayCaster& caster) {
       const lt::Stopwatch clock;
       auto atlas =

@@ -3,7 +3,8 @@
 // (or any scene `lucent render` takes). One prepare, then frames alternating a camera turned by a
 // few degrees (the view: the stages are kept) with a light turned by a few degrees (everything a
 // frame builds is built again, which is what every frame cost before the stages were kept). Both
-// kinds are timed in the same run; the ratio is the speed-up of a view change.
+// kinds are timed in the same run; the ratio is the speed-up of a view change. Each kind's phases
+// (Statistics::frameSeconds) are printed as medians, so a frame's cost splits into its stages.
 //
 //   build/bench/view_change_bench [--method NAME]... [--knob NAME=VALUE]... [--frames N]
 //       [scene options of lucent render: --shape, --size-mm, --material, --light, --width, ...]
@@ -54,15 +55,36 @@ double median(std::vector<double> v) {
   return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
-/// Seconds of one frame and whether it reused the kept stages.
-std::pair<double, bool> timeFrame(lt::Prepared& prepared, const lt::SceneDescription& scene,
-                                  const lt::ShadeRequest& request) {
+/// One frame: its seconds, whether it reused the kept stages, and its phases' seconds.
+struct TimedFrame {
+  double seconds = 0;
+  bool reused = false;
+  std::vector<std::pair<std::string, double>> phases;
+};
+
+TimedFrame timeFrame(lt::Prepared& prepared, const lt::SceneDescription& scene,
+                     const lt::ShadeRequest& request) {
   lt::Statistics stats;
   const lt::Stopwatch clock;
   lt::Registry::frame(prepared, scene, request, stats);
   const double s = clock.seconds();
   const auto reused = stats.figures.find("light_stages_reused");
-  return {s, reused != stats.figures.end() && reused->second == 1};
+  return {s, reused != stats.figures.end() && reused->second == 1, stats.frameSeconds};
+}
+
+/// "phase median ..." over frames whose phases come in the same order (a technique's frames do).
+std::string phaseMedians(const std::vector<TimedFrame>& frames) {
+  std::string out;
+  for (std::size_t p = 0; !frames.empty() && p < frames.front().phases.size(); ++p) {
+    std::vector<double> v;
+    for (const TimedFrame& f : frames)
+      if (p < f.phases.size()) v.push_back(f.phases[p].second);
+    char figure[96];
+    std::snprintf(figure, sizeof figure, " %s %.4f", frames.front().phases[p].first.c_str(),
+                  median(v));
+    out += figure;
+  }
+  return out;
 }
 
 void benchOne(const lt::Registry& registry, const lt::Technique& t, lucent::cli::Scene& scene,
@@ -72,22 +94,28 @@ void benchOne(const lt::Registry& registry, const lt::Technique& t, lucent::cli:
   lt::Statistics stats;
   const auto prepared = registry.prepare(t, scene, values, request, stats);
   const std::vector<lucent::scene::Light> lights = scene.lights;
-  std::vector<double> view, light;
-  int reusedViews = 0;
+  std::vector<TimedFrame> view, light;
   timeFrame(*prepared, scene, request);  // the first frame builds the stages
   for (int f = 1; f <= frames; ++f) {
     const lucent::scene::PinholeCamera camera = turned(scene.camera, 3.0 * f);
     const lt::ShadeRequest moved = lt::pixelRequest(camera, scene);
-    const auto [seconds, reused] = timeFrame(*prepared, scene, moved);
-    view.push_back(seconds);
-    reusedViews += reused;
+    view.push_back(timeFrame(*prepared, scene, moved));
     scene.lights = turnedLights(lights, 3.0 * f);
-    light.push_back(timeFrame(*prepared, scene, moved).first);
+    light.push_back(timeFrame(*prepared, scene, moved));
   }
   scene.lights = lights;
-  const double v = median(view), l = median(light);
+  const auto seconds = [](const std::vector<TimedFrame>& frames) {
+    std::vector<double> v;
+    for (const TimedFrame& f : frames) v.push_back(f.seconds);
+    return median(v);
+  };
+  const double v = seconds(view), l = seconds(light);
+  const int reusedViews =
+      int(std::count_if(view.begin(), view.end(), [](const TimedFrame& f) { return f.reused; }));
   std::printf("%-10s %8zu %14.4f %14.4f %10.1f %8d/%d\n", t.name.c_str(), request.points.size(), v,
               l, l / v, reusedViews, frames);
+  std::printf("  phases (median s), view change:%s\n", phaseMedians(view).c_str());
+  std::printf("  phases (median s), light change:%s\n", phaseMedians(light).c_str());
 }
 }  // namespace
 

@@ -2,6 +2,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -93,15 +94,23 @@ bool EmbreeRayCaster::occluded(const glm::dvec3& o, const glm::dvec3& d, double 
 
 void EmbreeRayCaster::occludedMany(const scene::ShadowRay* rays, std::size_t n,
                                    bool* blocked) const {
-  if (n == 0) return;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-  std::vector<RTCRay> stream(n);
-  for (std::size_t i = 0; i < n; ++i)
-    stream[i] = embreeRay(rays[i].origin, rays[i].direction, 0, rays[i].tMax);
-  rtcOccluded1M(mImpl->scene, &context, stream.data(), unsigned(n), sizeof(RTCRay));
-  for (std::size_t i = 0; i < n; ++i) blocked[i] = hitSomething(stream[i]);
+  // Streams of at most 2048 rays, in a buffer kept per thread: counts that Embree's unsigned (and
+  // int) hold, and no allocation a call.
+  constexpr std::size_t kStream = 2048;
+  thread_local std::vector<RTCRay> buffer(kStream);
+  RTCRay* stream = buffer.data();
+  for (std::size_t first = 0; first < n; first += kStream) {
+    const std::size_t m = std::min(kStream, n - first);
+    for (std::size_t i = 0; i < m; ++i) {
+      const scene::ShadowRay& r = rays[first + i];
+      stream[i] = embreeRay(r.origin, r.direction, 0, r.tMax);
+    }
+    rtcOccluded1M(mImpl->scene, &context, stream, unsigned(m), sizeof(RTCRay));
+    for (std::size_t i = 0; i < m; ++i) blocked[first + i] = hitSomething(stream[i]);
+  }
 }
 
 }  // namespace lucent::raycast

@@ -1,11 +1,13 @@
 // Shadow rays cast as streams (RayCaster::occludedMany, scene::irradianceMany, the atlas's
 // irradiance) give what one ray at a time gives: the same terms in the same order, and Embree's
-// stream traversal the same answers as its single-ray one.
+// stream traversal the same answers as its single-ray one; a recycled atlas what a fresh one does.
 #include <doctest/doctest.h>
 
 #include <memory>
 #include <vector>
 
+#include <lucent/atlas/irradiance_atlas.hpp>
+#include <lucent/atlas/texture_atlas.hpp>
 #include <lucent/reference/surface_samples.hpp>
 #include <lucent/scene/irradiance.hpp>
 #include <lucent/scene/shapes.hpp>
@@ -15,31 +17,15 @@
 using namespace lucent;
 
 namespace {
-/// The inner caster's single-ray queries only (occludedMany falls back to occluded).
-class OneRayAtATime final : public scene::RayCaster {
- public:
-  explicit OneRayAtATime(const scene::RayCaster& inner) : mInner(inner) {}
-  std::optional<scene::RayHit> intersect(const glm::dvec3& o, const glm::dvec3& d, double tMin,
-                                         double tMax) const override {
-    return mInner.intersect(o, d, tMin, tMax);
-  }
-  bool occluded(const glm::dvec3& o, const glm::dvec3& d, double tMin, double tMax) const override {
-    return mInner.occluded(o, d, tMin, tMax);
-  }
-
- private:
-  const scene::RayCaster& mInner;
-};
-
-/// Every kind of light, from directions where a torus shadows itself; a point light on the
-/// surface (zero distance at one point) and one behind everything.
-std::vector<scene::Light> everyKindOfLight(const reference::SurfaceSamples& s) {
+/// Every kind of light, from directions where a torus shadows itself; a point light at sample 0's
+/// shadow-ray origin (zero distance there) and a light from below.
+std::vector<scene::Light> everyKindOfLight(const reference::SurfaceSamples& s, double rayEpsilon) {
   scene::EnvironmentLight sky;
   sky.width = sky.height = 1;
   sky.radiance = {glm::vec3(0.5f, 0.25f, 0.125f)};
   return {scene::PointLight{glm::dvec3(0, 30, -10), glm::dvec3(900)},
           scene::DirectionalLight{glm::normalize(glm::dvec3(1, 0.1, 0.2)), glm::dvec3(0.7)}, sky,
-          scene::PointLight{s.position[0], glm::dvec3(1)},
+          scene::PointLight{s.position[0] + s.faceNormal[0] * rayEpsilon, glm::dvec3(1)},
           scene::DirectionalLight{glm::dvec3(0, -1, 0), glm::dvec3(0.3)}};
 }
 }  // namespace
@@ -48,13 +34,17 @@ TEST_CASE("Shadow streams: irradianceMany equals irradianceAt point by point, ev
   const test::SmallScene scene(scene::shapes::torus(), 20.0, 8);
   const auto samples = reference::buildSurfaceSamples(scene.mesh, 0.4);
   REQUIRE(samples.size() > 1000);
-  const auto lights = everyKindOfLight(samples);
   scene::IrradianceSettings irr = scene.irr;
   irr.environmentStrata = 3;
+  const auto lights = everyKindOfLight(samples, irr.rayEpsilon);
+  // The light at zero distance from sample 0's ray origin gives it no term (and no ray).
+  CHECK_FALSE(scene::detail::shadowedTerm(
+      lights[3], samples.position[0] + samples.faceNormal[0] * irr.rayEpsilon, samples.normal[0],
+      samples.faceNormal[0], irr.eta));
   const auto pointAt = [&](std::size_t i) {
     return scene::SurfacePoint{samples.position[i], samples.normal[i], samples.faceNormal[i], i};
   };
-  const OneRayAtATime single(*scene.caster);
+  const scene::OneRayAtATime single(*scene.caster);
   std::vector<glm::dvec3> bySingle(samples.size()), byStream(samples.size());
   scene::irradianceMany(samples.size(), pointAt, lights, single, irr, bySingle.data());
   scene::irradianceMany(samples.size(), pointAt, lights, *scene.caster, irr, byStream.data());
@@ -74,7 +64,9 @@ TEST_CASE("Shadow streams: irradianceMany equals irradianceAt point by point, ev
   }
   CHECK(shadowed > 50);
   CHECK(lit > 50);
-  CHECK(streamDiffers == 0);  // Embree's stream traversal answers as its single rays do here
+  // Embree's packet and single-ray kernels are separate code: they agree here (0 points differ on
+  // the machine this was written on), but need not at a grazing edge on every CPU.
+  CHECK(streamDiffers <= samples.size() / 1000);
 }
 
 TEST_CASE("Shadow streams: Embree's occludedMany answers each ray as occluded does") {
@@ -94,13 +86,43 @@ TEST_CASE("Shadow streams: Embree's occludedMany answers each ray as occluded do
   REQUIRE(rays.size() > 1000);
   std::unique_ptr<bool[]> blocked(new bool[rays.size()]);
   scene.caster->occludedMany(rays.data(), rays.size(), blocked.get());
-  std::size_t hits = 0;
+  std::size_t hits = 0, differ = 0;
   for (std::size_t i = 0; i < rays.size(); ++i) {
     const bool one = scene.caster->occluded(rays[i].origin, rays[i].direction, 0, rays[i].tMax);
-    CHECK(blocked[i] == one);
+    differ += blocked[i] != one;
     hits += one;
   }
+  CHECK(differ <= rays.size() / 1000);  // separate kernels: see the test above
   CHECK(hits > rays.size() / 10);
   CHECK(hits < rays.size() * 9 / 10);
-  scene.caster->occludedMany(rays.data(), 0, blocked.get());  // no rays: nothing to do
+  blocked[0] = true;
+  scene.caster->occludedMany(rays.data(), 0, blocked.get());  // no rays: nothing written
+  CHECK(blocked[0]);
+}
+
+TEST_CASE("Atlas irradiance: an atlas lit with an earlier atlas's buffers equals a fresh one") {
+  const test::SmallScene scene(scene::shapes::torus(), 20.0, 8);
+  const auto surfaceOf = [&](int resolution) {
+    atlas::AtlasOptions options;
+    options.resolution = resolution;
+    return atlas::buildAtlasSurface(atlas::buildTextureAtlas(scene.mesh, options), scene.mesh,
+                                    scene.normals);
+  };
+  const auto coarse = surfaceOf(64), fine = surfaceOf(128);
+  const std::vector<scene::Light> before{
+      scene::DirectionalLight{glm::dvec3(0, 1, 0), glm::dvec3(2)}},
+      after = scene.lights;
+  // Recycled from the same surface under another light, and from a surface of another size.
+  for (const auto& old : {fine, coarse}) {
+    atlas::IrradianceAtlas recycled = atlas::lightAtlas(old, before, *scene.caster, scene.irr);
+    const auto fresh = atlas::lightAtlas(fine, after, *scene.caster, scene.irr);
+    const auto refilled = atlas::lightAtlas(fine, after, *scene.caster, scene.irr, util::serialFor,
+                                            {}, std::move(recycled));
+    CHECK(refilled.resolution == fresh.resolution);
+    CHECK((refilled.surface == fresh.surface));
+    CHECK(refilled.power == fresh.power);
+    CHECK(refilled.importance == fresh.importance);
+    CHECK(refilled.totalPower == fresh.totalPower);
+    CHECK(fresh.totalPower.x > 0);
+  }
 }

@@ -135,7 +135,7 @@ inline IrradianceAtlas lightAtlas(const std::shared_ptr<const AtlasSurface>& sur
   out.resolution = s.resolution;
   out.surface = surface;
   out.power.assign(texels, glm::vec3(0));
-  out.importance.assign(texels, 0.0f);
+  out.importance.resize(texels);  // every texel's is set from its power below
   std::atomic<std::size_t> done{0};
   // Owned texels in atlas order, kShadowStream at a time: neighbours' shadow rays toward a light
   // are nearly parallel, so the caster traces them as packets (scene::irradianceMany).

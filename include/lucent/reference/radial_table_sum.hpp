@@ -8,9 +8,9 @@
 /// (radial_table_sum_avx512.hpp); elsewhere it gathers per channel, cloned for AVX2 like the
 /// truth's kernel.
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <cstddef>
+#include <stdexcept>
 #include <vector>
 
 #include "../optics/dipole_lut.hpp"
@@ -29,6 +29,8 @@ struct PlanarRadialTable {
   float rMax = 0;
 
   explicit PlanarRadialTable(const optics::RadialTable<float>& table) : rMax(table.rMax()) {
+    if (table.size() < 2)
+      throw std::invalid_argument("PlanarRadialTable: a table needs two nodes to interpolate");
     for (int c = 0; c < 3; ++c) {
       channel[c].reserve(table.size());
       for (const auto& v : table.values()) channel[c].push_back(v[c]);
@@ -79,7 +81,6 @@ LUCENT_VECTOR_CLONES inline void radialTableSumGathered(const RdKernelSamples& s
 /// B(x_o) into out, by the fastest path this CPU has.
 inline void radialTableSum(const RdKernelSamples& s, const PlanarRadialTable& table, float ox,
                            float oy, float oz, double out[3]) {
-  assert(table.size() >= 2 && "a radial table needs two nodes to interpolate");
   out[0] = out[1] = out[2] = 0;
   std::size_t done = 0;
 #if LUCENT_HAS_AVX512_TABLE_SUM

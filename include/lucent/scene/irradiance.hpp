@@ -133,35 +133,41 @@ struct SurfacePoint {
   std::uint64_t sampleId = 0;
 };
 
-/// irradianceAt at the points pointAt(0..n-1) into out[0, n), equal to it point by point (the same
-/// terms, added in the same order), with the shadow rays of the point and directional lights cast
-/// together through RayCaster::occludedMany, so that Embree traces neighbouring points' rays as
-/// packets. @param pointAt callable std::size_t -> SurfacePoint.
+/// irradianceAt at the points pointAt(0..n-1) into out[0, n): the same terms added in the same
+/// order, so equal to it point by point wherever the caster's occludedMany answers as its
+/// occluded does. The shadow rays of the point and directional lights are cast together through
+/// RayCaster::occludedMany, so that Embree traces neighbouring points' rays as packets; an
+/// environment's rays are cast one at a time. @param pointAt callable std::size_t -> SurfacePoint.
 template <class PointAt>
 void irradianceMany(std::size_t n, const PointAt& pointAt, const std::vector<Light>& lights,
                     const RayCaster& caster, const IrradianceSettings& settings, glm::dvec3* out) {
   const std::size_t perPoint = lights.size();
   std::vector<glm::dvec3> term(n * perPoint, glm::dvec3(0));
+  std::vector<SurfacePoint> points(n);
+  std::vector<glm::dvec3> origins(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    points[k] = pointAt(k);
+    origins[k] = points[k].position + points[k].faceNormal * settings.rayEpsilon;
+  }
+  // Light by light, so that consecutive rays (which Embree packs into packets) share a light.
   std::vector<ShadowRay> rays;
   std::vector<std::size_t> termOfRay;
   rays.reserve(n * perPoint);
   termOfRay.reserve(n * perPoint);
-  for (std::size_t k = 0; k < n; ++k) {
-    const SurfacePoint p = pointAt(k);
-    const glm::dvec3 origin = p.position + p.faceNormal * settings.rayEpsilon;
-    for (std::size_t l = 0; l < perPoint; ++l) {
+  for (std::size_t l = 0; l < perPoint; ++l)
+    for (std::size_t k = 0; k < n; ++k) {
+      const SurfacePoint& p = points[k];
       glm::dvec3& t = term[k * perPoint + l];
       if (const auto* env = std::get_if<EnvironmentLight>(&lights[l])) {
-        t = detail::irradianceFromEnvironment(*env, origin, p.normal, p.faceNormal, caster,
+        t = detail::irradianceFromEnvironment(*env, origins[k], p.normal, p.faceNormal, caster,
                                               settings, p.sampleId);
-      } else if (const auto s = detail::shadowedTerm(lights[l], origin, p.normal, p.faceNormal,
+      } else if (const auto s = detail::shadowedTerm(lights[l], origins[k], p.normal, p.faceNormal,
                                                      settings.eta)) {
         t = s->irradiance;
         rays.push_back(s->ray);
         termOfRay.push_back(k * perPoint + l);
       }
     }
-  }
   std::unique_ptr<bool[]> blocked(new bool[rays.size()]);
   caster.occludedMany(rays.data(), rays.size(), blocked.get());
   for (std::size_t r = 0; r < rays.size(); ++r)

@@ -42,6 +42,24 @@ class RayCaster {
   }
 };
 
+/// Another caster's single-ray queries only: its occludedMany falls back to one occluded() a ray
+/// (the baseline that shadow_ray_bench and the stream tests hold the streams to).
+class OneRayAtATime final : public RayCaster {
+ public:
+  explicit OneRayAtATime(const RayCaster& inner) : mInner(inner) {}
+  std::optional<RayHit> intersect(const glm::dvec3& origin, const glm::dvec3& direction,
+                                  double tMin, double tMax) const override {
+    return mInner.intersect(origin, direction, tMin, tMax);
+  }
+  bool occluded(const glm::dvec3& origin, const glm::dvec3& direction, double tMin,
+                double tMax) const override {
+    return mInner.occluded(origin, direction, tMin, tMax);
+  }
+
+ private:
+  const RayCaster& mInner;
+};
+
 /// Whether p lies inside the closed surface `caster` holds: an odd number of crossings along a
 /// fixed, axis-free direction (hits closer than epsilon to the last are the same crossing).
 inline bool insideByParity(const RayCaster& caster, glm::dvec3 p, double epsilon) {
