@@ -20,10 +20,12 @@
 
 #include "plot/line_chart.hpp"
 #include "util/tbb_parallel.hpp"
+#include "median.hpp"
 
 using namespace lucent;
 
 namespace {
+using lucent::bench::median;
 constexpr double kRadiiInMfp[] = {0.1, 0.3, 1.0, 3.0, 10.0};
 constexpr int kRadii = 5;
 constexpr double kRingWidthInMfp = 0.05;  // 240 rings to 12 mean free paths
@@ -39,12 +41,6 @@ struct Row {
   /// its own multiple-scattering part.
   double mcMultipleTotal = 0, multipleTotal = 0, multipleRadialError[kRadii];
 };
-
-double median(std::vector<double> v) {
-  if (v.empty()) return NAN;
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 const char* arg(int argc, char** argv, const char* name, const char* fallback) {
   for (int i = 1; i + 1 < argc; ++i)

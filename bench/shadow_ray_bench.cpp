@@ -16,15 +16,12 @@
 
 #include "cli/args.hpp"
 #include "cli/scene_setup.hpp"
+#include "median.hpp"
 
 namespace {
+using lucent::bench::median;
 namespace lt = lucent::technique;
 using lucent::scene::RayCaster;
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 }  // namespace
 
 int main(int argc, char** argv) {

@@ -20,9 +20,11 @@
 #include "cli/args.hpp"
 #include "cli/scene_setup.hpp"
 #include "cli/technique_run.hpp"
+#include "median.hpp"
 #include "util/error.hpp"
 
 namespace {
+using lucent::bench::median;
 namespace lt = lucent::technique;
 using lucent::cli::Args;
 
@@ -48,11 +50,6 @@ std::vector<lucent::scene::Light> turnedLights(std::vector<lucent::scene::Light>
       d->towardLight = turn(d->towardLight);
   }
   return lights;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
 /// One frame: its seconds, whether it reused the kept stages, and its phases' seconds.

@@ -19,13 +19,15 @@ using namespace lucent;
 namespace {
 /// Every kind of light, from directions where a torus shadows itself; a point light at sample 0's
 /// shadow-ray origin (zero distance there) and a light from below.
-std::vector<scene::Light> everyKindOfLight(const reference::SurfaceSamples& s, double rayEpsilon) {
+std::vector<scene::Light> everyKindOfLight(const reference::SurfaceSamples& s,
+                                           const scene::IrradianceSettings& irr) {
   scene::EnvironmentLight sky;
   sky.width = sky.height = 1;
   sky.radiance = {glm::vec3(0.5f, 0.25f, 0.125f)};
   return {scene::PointLight{glm::dvec3(0, 30, -10), glm::dvec3(900)},
           scene::DirectionalLight{glm::normalize(glm::dvec3(1, 0.1, 0.2)), glm::dvec3(0.7)}, sky,
-          scene::PointLight{s.position[0] + s.faceNormal[0] * rayEpsilon, glm::dvec3(1)},
+          scene::PointLight{scene::detail::shadowRayOrigin(s.position[0], s.faceNormal[0], irr),
+                            glm::dvec3(1)},
           scene::DirectionalLight{glm::dvec3(0, -1, 0), glm::dvec3(0.3)}};
 }
 }  // namespace
@@ -36,11 +38,11 @@ TEST_CASE("Shadow streams: irradianceMany equals irradianceAt point by point, ev
   REQUIRE(samples.size() > 1000);
   scene::IrradianceSettings irr = scene.irr;
   irr.environmentStrata = 3;
-  const auto lights = everyKindOfLight(samples, irr.rayEpsilon);
+  const auto lights = everyKindOfLight(samples, irr);
   // The light at zero distance from sample 0's ray origin gives it no term (and no ray).
   CHECK_FALSE(scene::detail::shadowedTerm(
-      lights[3], samples.position[0] + samples.faceNormal[0] * irr.rayEpsilon, samples.normal[0],
-      samples.faceNormal[0], irr.eta));
+      lights[3], scene::detail::shadowRayOrigin(samples.position[0], samples.faceNormal[0], irr),
+      samples.normal[0], samples.faceNormal[0], irr.eta));
   const auto pointAt = [&](std::size_t i) {
     return scene::SurfacePoint{samples.position[i], samples.normal[i], samples.faceNormal[i], i};
   };

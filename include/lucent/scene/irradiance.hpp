@@ -49,6 +49,13 @@ struct ShadowedTerm {
 };
 
 namespace detail {
+/// Where a point's shadow rays start: off the surface along the face normal, so that they do not
+/// hit the point's own triangle.
+inline glm::dvec3 shadowRayOrigin(const glm::dvec3& point, const glm::dvec3& faceNormal,
+                                  const IrradianceSettings& settings) {
+  return point + faceNormal * settings.rayEpsilon;
+}
+
 /// cos * Ft for light arriving from towardLight: 0 from behind the shading or the face normal.
 inline double transmittedCosine(const glm::dvec3& normal, const glm::dvec3& faceNormal,
                                 const glm::dvec3& towardLight, double eta) {
@@ -113,7 +120,7 @@ inline glm::dvec3 irradianceAt(const glm::dvec3& point, const glm::dvec3& normal
                                const glm::dvec3& faceNormal, const std::vector<Light>& lights,
                                const RayCaster& caster, const IrradianceSettings& settings,
                                std::uint64_t sampleId = 0) {
-  const glm::dvec3 origin = point + faceNormal * settings.rayEpsilon;
+  const glm::dvec3 origin = detail::shadowRayOrigin(point, faceNormal, settings);
   glm::dvec3 e(0);
   for (const Light& light : lights) {
     if (const auto* env = std::get_if<EnvironmentLight>(&light))
@@ -147,7 +154,7 @@ void irradianceMany(std::size_t n, const PointAt& pointAt, const std::vector<Lig
   std::vector<glm::dvec3> origins(n);
   for (std::size_t k = 0; k < n; ++k) {
     points[k] = pointAt(k);
-    origins[k] = points[k].position + points[k].faceNormal * settings.rayEpsilon;
+    origins[k] = detail::shadowRayOrigin(points[k].position, points[k].faceNormal, settings);
   }
   // Light by light, so that consecutive rays (which Embree packs into packets) share a light.
   std::vector<ShadowRay> rays;

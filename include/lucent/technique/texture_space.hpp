@@ -109,12 +109,12 @@ inline std::shared_ptr<const atlas::AtlasSurface> buildAtlas(const SceneDescript
 inline atlas::ImportanceSamples drawSamples(
     const std::shared_ptr<const atlas::AtlasSurface>& surface, const SceneDescription& scene,
     const KnobValues& knobs, Statistics& stats, atlas::IrradianceAtlas& scratch) {
-  atlas::IrradianceAtlas& irradiance = scratch;
-  irradiance = stats.timeFrame("irradiance", [&] {
+  scratch = stats.timeFrame("irradiance", [&] {
     return atlas::lightAtlas(surface, scene.lights, *scene.caster, irradianceSettings(scene, knobs),
                              scene.parallelFor, scene.stage("irradiance atlas"),
                              std::move(scratch));
   });
+  const atlas::IrradianceAtlas& irradiance = scratch;
   stats.figures["transmitted_power"] =
       irradiance.totalPower.x + irradiance.totalPower.y + irradiance.totalPower.z;
   scene.checkCancelled();
