@@ -1,6 +1,6 @@
-// libFuzzer target: a mesh file (.obj, .ply or .stl, by LUCENT_FUZZ_EXTENSION) through lucent's
-// checks and VTK's reader. A clear InputError is the expected answer to bad input; a crash, hang or
-// leak is a finding.
+// libFuzzer target: a mesh file (.obj, .ply, .stl or .off, by LUCENT_FUZZ_EXTENSION) through
+// lucent's checks and VTK's reader. A clear InputError is the expected answer to bad input; a
+// crash, hang or leak is a finding.
 #include <cstddef>
 #include <cstdint>
 

@@ -79,6 +79,23 @@ std::pair<const technique::Technique*, technique::KnobValues> plannedTechnique(
                  o.c_str());
   return {p.choice->technique, p.choice->technique->values(plan::knobPairs(p.choice->knobs))};
 }
+/// With no --method: whether the default technique cannot take the scene (a scan's heterogeneous
+/// medium, say), so the planner chooses one that can, as --method auto would. Says so on stderr.
+bool defaultCannotServe(const Args& args, const technique::Technique& fallback, const Scene& scene,
+                        std::optional<technique::ShadeRequest>& pixels) {
+  pixels = technique::pixelRequest(scene.camera, scene);
+  const auto missing =
+      technique::unmet(fallback.capabilities, technique::requirementsOf(scene, *pixels));
+  if (missing.empty()) return false;
+  if (args.has("knob"))
+    args.fail("the default technique '" + fallback.name + "' cannot take " + missing.front() +
+              ": name a --method for the --knob, or drop --knob and let the planner choose");
+  std::fprintf(stderr,
+               "lucent render: no --method: the default '%s' cannot take %s; the planner "
+               "chooses one that can (as --method auto)\n",
+               fallback.name.c_str(), missing.front().c_str());
+  return true;
+}
 }  // namespace
 
 int runRender(int argc, char** argv) {
@@ -87,7 +104,8 @@ int runRender(int argc, char** argv) {
   for (auto& s : toneMapOptionSpecs()) specs.push_back(s);
   specs.push_back({"method", "NAME|auto",
                    "rendering technique (default " + registry.defaultReference().name +
-                       "); auto: the planner's choice for the scene and budget (lucent plan)"});
+                       ", or the planner's choice where it cannot take the scene); auto: the "
+                       "planner's choice for the scene and budget (lucent plan)"});
   for (auto& s : planOptionSpecs()) specs.push_back(s);
   specs.push_back({"knob", "NAME=VALUE", "set one of the method's knobs", true});
   specs.push_back({"out", "FILE",
@@ -113,7 +131,7 @@ int runRender(int argc, char** argv) {
   for (const auto& o : outputs)
     if (!isExr(o) && !isPng(o)) args.fail("--out '" + o + "': use a .exr or .png file name");
 
-  const bool automatic = args.get("method") == plan::kAutomatic;
+  bool automatic = args.get("method") == plan::kAutomatic;
   const plan::Budget budget = budgetOf(args);
   if (!automatic && (budget.given() || args.has("calibration")))
     args.fail("--budget-ms, --max-error and --calibration go with --method auto");
@@ -131,8 +149,9 @@ int runRender(int argc, char** argv) {
   Scene scene = buildScene(args);
   // The plan reads the pixels the camera sees; the render takes the same ones.
   std::optional<technique::ShadeRequest> pixels;
+  if (!args.has("method")) automatic = defaultCannotServe(args, *chosen, scene, pixels);
   if (automatic) {
-    pixels = technique::pixelRequest(scene.camera, scene);
+    if (!pixels) pixels = technique::pixelRequest(scene.camera, scene);
     std::tie(chosen, knobs) = plannedTechnique(args, scene, *pixels, budget);
   }
   const technique::Technique& technique = *chosen;

@@ -17,6 +17,7 @@
 #include "../io/mesh_repair.hpp"
 #include "../io/vtk_isosurface.hpp"
 #include "../io/vtk_volume.hpp"
+#include "../io/winding_remesh.hpp"
 #include "../raycast/embree_ray_caster.hpp"
 #include "../render/density_field.hpp"
 #include "../scene/builtin_shapes.hpp"
@@ -96,10 +97,16 @@ scene::Light parseLight(const Args& args, const std::string& text, double diag,
       return env;
     }
     const image::Image img = io::readExr(first);
-    auto radiance = [&](int x, int y) { return glm::vec3(img.at(x, y)); };
-    const std::string problem = scene::environmentTexelProblem(img.width, img.height, radiance);
-    if (!problem.empty()) args.fail("--light " + text + ": " + problem + " (fix the EXR)");
-    env = scene::environmentFromImage(img.width, img.height, radiance);
+    const scene::ScreenedTexels texels = scene::screenEnvironmentTexels(
+        img.width, img.height, [&](int x, int y) { return glm::vec3(img.at(x, y)); });
+    if (!texels.problem.empty())
+      args.fail("--light " + text + ": " + texels.problem + " (fix the EXR)");
+    if (!texels.note.empty())
+      std::fprintf(stderr, "lucent %s: --light %s: %s\n", args.command().c_str(), text.c_str(),
+                   texels.note.c_str());
+    env = scene::environmentFromImage(img.width, img.height, [&](int x, int y) {
+      return texels.radiance[std::size_t(y) * std::size_t(img.width) + std::size_t(x)];
+    });
     env.source = first;
     env.scale = second.empty() ? 1.0 : parseNumber(second, what);
     checkLightValues(args, text, glm::dvec3(env.scale));
@@ -284,7 +291,7 @@ void scanMedium(std::shared_ptr<const scene::VoxelGrid> scan,
 
 std::vector<OptionSpec> sceneOptionSpecs() {
   std::vector<OptionSpec> specs{
-      {"mesh", "FILE", "mesh to render (.ply .obj .stl .vtp .vtk)"},
+      {"mesh", "FILE", "mesh to render (.ply .obj .stl .off .vtp .vtk)"},
       {"shape", "NAME",
        std::string("built-in shape (default ") + kDefaultShape + "): " + shapeList()},
       {"size-mm", "X", "scale the object so its bounding-box diagonal is X mm (default 30)"},
@@ -296,8 +303,15 @@ std::vector<OptionSpec> sceneOptionSpecs() {
       {"width", "W", "image width in pixels (default 400)"},
       {"height", "H", "image height in pixels (default 400)"},
       {"repair", "",
-       "weld, drop degenerate faces, close holes and orient the mesh before the check (reports "
-       "what changed)"},
+       "weld, drop degenerate faces, close holes and orient the mesh before the check; when that "
+       "is not enough, remesh it by its generalized winding number (reports what changed and how "
+       "far the result lies from the input)"},
+      {"repair-resolution", "N",
+       "with --repair: voxels along the longest side when the mesh must be remeshed by its "
+       "winding number (default " +
+           std::to_string(io::kDefaultRemeshResolution) + ", " +
+           std::to_string(io::kMinRemeshResolution) + " to " +
+           std::to_string(io::kMaxRemeshResolution) + ")"},
       {"skip-mesh-check", "", "render even if the mesh is not closed and outward-oriented"},
       {"density", "SPEC",
        "heterogeneous medium: sigma_a and sigma_s' times a density, noise:F, FILE.vdb[:GRID] or "
@@ -347,8 +361,13 @@ Scene buildScene(const Args& args) {
   const std::vector<std::string> inclusionMeshes = args.all("inclusion-mesh");
   if (!inclusionMeshes.empty() && !args.has("mesh"))
     args.fail("--inclusion-mesh needs --mesh (its coordinates are the object mesh's)");
+  if (args.has("repair-resolution") && !args.has("repair"))
+    args.fail("--repair-resolution goes with --repair");
   if (args.has("repair")) {
-    const io::RepairReport repaired = io::repairMesh(s.mesh);
+    const int resolution = args.integer("repair-resolution", io::kDefaultRemeshResolution,
+                                        io::kMinRemeshResolution, io::kMaxRemeshResolution);
+    const io::RepairReport repaired = io::repairMesh(
+        s.mesh, resolution, "lucent " + args.command() + ": mesh '" + s.meshName + "'");
     const auto changes = repaired.changes();
     std::fprintf(stderr, "lucent %s: --repair: %s\n", args.command().c_str(),
                  changes.empty() ? "nothing to repair" : changes.front().c_str());

@@ -17,6 +17,7 @@
 
 #include "../util/error.hpp"
 #include "mesh_file_checks.hpp"
+#include "off_reader.hpp"
 #include "ply_reader.hpp"
 #include "quiet_vtk.hpp"
 #include "stl_reader.hpp"
@@ -67,13 +68,15 @@ scene::TriangleMesh readMesh(const std::string& path) {
     pd = readObj(path);  // lucent's own: VTK's OBJ reader cannot be made safe
   else if (ext == ".stl")
     pd = readStl(path);  // lucent's own: VTK's STL reader trusts the triangle count
+  else if (ext == ".off")
+    pd = readOff(path);  // VTK 9.1 has no OFF reader
   else if (ext == ".vtp")
     pd = readWith<vtkXMLPolyDataReader>(path);
   else if (ext == ".vtk")
     pd = readWith<vtkPolyDataReader>(path);
   else
     throw InputError("cannot read mesh '" + path + "': unknown extension '" + ext +
-                     "'; use .ply, .obj, .stl, .vtp or .vtk (legacy polydata)");
+                     "'; use .ply, .obj, .stl, .off, .vtp or .vtk (legacy polydata)");
   if (!pd || pd->GetNumberOfPoints() == 0)
     throw InputError("cannot read mesh '" + path +
                      "': the reader found no points; is the file a valid " + ext + " mesh?");

@@ -1,6 +1,6 @@
 #pragma once
 /// @file mesh_io.hpp
-/// @brief Reads meshes with VTK's readers: .ply, .obj, .stl, .vtp, .vtk (legacy polydata).
+/// @brief Reads meshes with VTK's readers: .ply, .obj, .stl, .off, .vtp, .vtk (legacy polydata).
 #include <string>
 
 #include <lucent/scene/mesh.hpp>

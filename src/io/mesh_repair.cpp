@@ -1,5 +1,8 @@
 #include "mesh_repair.hpp"
 
+#include <cstdio>
+#include <utility>
+
 #include <vtkCleanPolyData.h>
 #include <vtkFillHolesFilter.h>
 #include <vtkNew.h>
@@ -11,12 +14,13 @@
 
 #include "quiet_vtk.hpp"
 #include "vtk_mesh.hpp"
+#include "winding_remesh.hpp"
 
 namespace lucent::io {
 
 std::vector<std::string> RepairReport::changes() const {
   std::vector<std::string> out;
-  if (pointsAfter != pointsBefore)
+  if (pointsAfter != pointsBefore && !remeshed)
     out.push_back("welded " + std::to_string(pointsBefore) + " points into " +
                   std::to_string(pointsAfter));
   if (degenerateBefore)
@@ -24,20 +28,30 @@ std::vector<std::string> RepairReport::changes() const {
   if (boundaryEdgesBefore != boundaryEdgesAfter)
     out.push_back("closed holes: " + std::to_string(boundaryEdgesBefore) +
                   " boundary edges before, " + std::to_string(boundaryEdgesAfter) + " after");
-  if (trianglesAfter != trianglesBefore)
+  if (trianglesAfter != trianglesBefore && !remeshed)
     out.push_back(std::to_string(trianglesBefore) + " triangles became " +
                   std::to_string(trianglesAfter));
   if (turnedOutward) out.push_back("oriented every face outward");
+  if (remeshed) {
+    char line[480];
+    std::snprintf(line, sizeof line,
+                  "welding, filling and orienting were not enough: remeshed by generalized "
+                  "winding number at %d voxels along the longest side (voxel %.3g), %zu "
+                  "triangles became %zu; the result lies within %.3g of the input (%.2g %% of "
+                  "the diagonal; mean %.3g), the input within %.3g of the result (%.2g %%; mean "
+                  "%.3g), in the mesh's units",
+                  resolution, voxel, trianglesBefore, trianglesAfter, resultToInputMax,
+                  100 * resultToInputMax / diagonal, resultToInputMean, inputToResultMax,
+                  100 * inputToResultMax / diagonal, inputToResultMean);
+    out.push_back(line);
+  }
   return out;
 }
 
-RepairReport repairMesh(scene::TriangleMesh& mesh) {
-  RepairReport r;
-  const scene::MeshReport before = scene::checkMesh(mesh);
-  r.trianglesBefore = mesh.triangles.size();
-  r.pointsBefore = mesh.positions.size();
-  r.boundaryEdgesBefore = before.boundaryEdges;
-  r.degenerateBefore = before.degenerateFaces;
+namespace {
+/// The cheap steps: weld, drop degenerate faces, fill holes (when `fillHoles`), orient consistently
+/// and outward.
+scene::TriangleMesh cheapRepair(const scene::TriangleMesh& mesh, bool fillHoles, bool& flipped) {
   const double diagonal = mesh.bounds().diagonal();
 
   const QuietVtk quiet;
@@ -53,7 +67,7 @@ RepairReport repairMesh(scene::TriangleMesh& mesh) {
   triangles->PassVertsOff();
   vtkNew<vtkFillHolesFilter> fill;  // holes of any size: a scan's open bottom too
   fill->SetInputConnection(triangles->GetOutputPort());
-  fill->SetHoleSize(10 * diagonal);
+  fill->SetHoleSize(fillHoles ? 10 * diagonal : 0.0);
   vtkNew<vtkTriangleFilter> fillTriangles;  // the patches are polygons
   fillTriangles->SetInputConnection(fill->GetOutputPort());
   vtkNew<vtkPolyDataNormals> orient;
@@ -65,7 +79,31 @@ RepairReport repairMesh(scene::TriangleMesh& mesh) {
       ->ComputePointNormalsOn();  // with no normals asked for, the filter passes its input through
   orient->Update();
 
-  mesh = fromPolyData(orient->GetOutput(), &r.turnedOutward);
+  return fromPolyData(orient->GetOutput(), &flipped);
+}
+}  // namespace
+
+RepairReport repairMesh(scene::TriangleMesh& mesh, int resolution, const std::string& what) {
+  RepairReport r;
+  const scene::MeshReport before = scene::checkMesh(mesh);
+  r.trianglesBefore = mesh.triangles.size();
+  r.pointsBefore = mesh.positions.size();
+  r.boundaryEdgesBefore = before.boundaryEdges;
+  r.degenerateBefore = before.degenerateFaces;
+  r.diagonal = mesh.bounds().diagonal();
+  scene::TriangleMesh repaired = cheapRepair(mesh, true, r.turnedOutward);
+  if (!scene::checkMesh(repaired).ok()) {
+    // The soup welded and, where it can be, consistently wound; its holes left to the field.
+    bool flipped = false;
+    const scene::TriangleMesh soup = cheapRepair(mesh, false, flipped);
+    const RemeshResult remesh =
+        remeshByWindingNumber(soup.triangles.empty() ? mesh : soup, mesh, resolution, what);
+    repaired = remesh.mesh;
+    r.remeshed = true, r.resolution = resolution, r.voxel = remesh.voxel;
+    r.resultToInputMax = remesh.resultToInputMax, r.resultToInputMean = remesh.resultToInputMean;
+    r.inputToResultMax = remesh.inputToResultMax, r.inputToResultMean = remesh.inputToResultMean;
+  }
+  mesh = std::move(repaired);
   const scene::MeshReport after = scene::checkMesh(mesh);
   r.trianglesAfter = mesh.triangles.size();
   r.pointsAfter = mesh.positions.size();

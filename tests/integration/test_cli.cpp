@@ -186,7 +186,7 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
       {"render --out " + out + " --light point:0,100,-100:-1,-1,-1",
        "intensities must lie in [0, 1e12]"},
       {"render --out " + out + " --light env:" + dir / "nan-env.exr",
-       "texel (1, 0) has radiance nan"},
+       "1 of 24 texel values are NaN"},
       {"render --out " + out + " --sigma-a 1e308,0.1,0.1 --sigma-s 1,1,1",
        "must lie in [0, 1e6] mm^-1"},
       {"render --out " + out + " --knob spacing=1e-9", "use a larger spacing or raise max-samples"},

@@ -2,14 +2,16 @@
 /// @brief A scan (vtkImageData) as lucent reads it, for the CLI's `--volume` and
 /// vtkLucentVolumeFilter alike: one array as a VoxelGrid (checked: spacing, extent, finite values)
 /// and its closed isosurface at a threshold (padded by one voxel below it, so a structure touching
-/// the scan's border is capped; contoured by VTK's flying edges, welded). Errors are
-/// lucent::technique::RequestError naming `what`, the problem and the fix.
+/// the scan's border is capped; the values kept off the threshold by scene::keepOffThreshold, so
+/// the surface is a closed 2-manifold at any threshold; contoured by VTK's flying edges). Errors
+/// are lucent::technique::RequestError naming `what`, the problem and the fix.
 #ifndef lucentScanSurface_h
 #define lucentScanSurface_h
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <vtkCleanPolyData.h>
 #include <vtkDataArray.h>
@@ -20,6 +22,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include <lucent/scene/iso_margin.hpp>
 #include <lucent/scene/voxel_grid.hpp>
 #include <lucent/technique/knob.hpp>
 
@@ -76,18 +79,25 @@ inline scene::VoxelGrid voxelGridOf(vtkImageData* image, vtkDataArray* array,
   return grid;
 }
 
-/// Contours `image`'s active scalars at `value`, welded: contouring leaves slivers where the
-/// surface passes within rounding of a grid node; merging points closer than 1e-5 of the box
-/// collapses them into edges, which the cleaner then drops (no holes open).
-inline vtkSmartPointer<vtkPolyData> contourWelded(vtkImageData* image, double value) {
+/// Contours `image`'s active scalars at `value` by VTK's flying edges (one point per crossed grid
+/// edge, shared by the triangles that use it).
+inline vtkSmartPointer<vtkPolyData> contour(vtkImageData* image, double value) {
   auto fe = vtkSmartPointer<vtkFlyingEdges3D>::New();
   fe->SetInputData(image);
   fe->SetValue(0, value);
   fe->ComputeNormalsOff();
   fe->ComputeGradientsOff();
   fe->ComputeScalarsOff();
+  fe->Update();
+  return fe->GetOutput();
+}
+
+/// Contours `image`'s active scalars at `value`, welded: contouring leaves slivers where the
+/// surface passes within rounding of a grid node; merging points closer than 1e-5 of the box
+/// collapses them into edges, which the cleaner then drops (no holes open).
+inline vtkSmartPointer<vtkPolyData> contourWelded(vtkImageData* image, double value) {
   auto weld = vtkSmartPointer<vtkCleanPolyData>::New();
-  weld->SetInputConnection(fe->GetOutputPort());
+  weld->SetInputData(contour(image, value));
   weld->SetTolerance(1e-5);
   weld->ConvertPolysToLinesOff();
   weld->ConvertLinesToPointsOff();
@@ -95,8 +105,9 @@ inline vtkSmartPointer<vtkPolyData> contourWelded(vtkImageData* image, double va
   return weld->GetOutput();
 }
 
-/// The closed isosurface of `grid` at `iso` (the grid's coordinates). `fix` says how to pick
-/// another threshold ("pick --iso inside that range").
+/// The closed isosurface of `grid` at `iso` (the grid's coordinates): a 2-manifold with no
+/// degenerate face at any threshold, within kIsoVertexMargin of a voxel of the exact one. `fix`
+/// says how to pick another threshold ("pick --iso inside that range").
 inline vtkSmartPointer<vtkPolyData> closedIsosurface(const scene::VoxelGrid& grid, double iso,
                                                      const std::string& what,
                                                      const std::string& fix) {
@@ -113,19 +124,24 @@ inline vtkSmartPointer<vtkPolyData> closedIsosurface(const scene::VoxelGrid& gri
   const glm::dvec3 origin = grid.origin - grid.spacing;
   image->SetOrigin(origin.x, origin.y, origin.z);
   image->SetSpacing(grid.spacing.x, grid.spacing.y, grid.spacing.z);
-  auto values = vtkSmartPointer<vtkFloatArray>::New();
-  values->SetNumberOfTuples(vtkIdType(dims[0]) * dims[1] * dims[2]);
-  const float below = float(std::min(double(*lo), iso) - 1.0);
-  vtkIdType id = 0;
+  // Offsets from the threshold (contoured at 0), so that the margin is exact near it in float.
+  std::vector<float> offsets(std::size_t(dims[0]) * dims[1] * dims[2]);
+  const float below = float(std::min(double(*lo), iso) - 1.0 - iso);
+  std::size_t id = 0;
   for (int k = 0; k < dims[2]; ++k)
     for (int j = 0; j < dims[1]; ++j)
       for (int i = 0; i < dims[0]; ++i) {
         const bool inside =
             i > 0 && j > 0 && k > 0 && i <= grid.dims.x && j <= grid.dims.y && k <= grid.dims.z;
-        values->SetValue(id++, inside ? grid.at(i - 1, j - 1, k - 1) : below);
+        offsets[id++] = inside ? float(double(grid.at(i - 1, j - 1, k - 1)) - iso) : below;
       }
+  scene::keepOffThreshold(offsets, glm::ivec3(dims[0], dims[1], dims[2]));
+  auto values = vtkSmartPointer<vtkFloatArray>::New();
+  values->SetNumberOfTuples(vtkIdType(offsets.size()));
+  std::copy(offsets.begin(), offsets.end(), values->GetPointer(0));
+  offsets = {};
   image->GetPointData()->SetScalars(values);
-  auto surface = contourWelded(image, iso);
+  auto surface = contour(image, 0.0);
   if (surface->GetNumberOfPolys() == 0)
     throw technique::RequestError(what + ": the isosurface at " + std::to_string(iso) +
                                   " has no triangles; " + fix);

@@ -328,12 +328,16 @@ std::string geometryFingerprint(const lucent::vtkadapter::PolyDataMesh& whole, v
 /// The environment map in `path`, checked texel by texel.
 lucent::scene::EnvironmentLight readEnvironment(const std::string& path) {
   const lucent::image::Image img = lucent::io::readExr(path);
-  auto radiance = [&](int x, int y) { return glm::vec3(img.at(x, y)); };
-  const std::string problem =
-      lucent::scene::environmentTexelProblem(img.width, img.height, radiance);
-  if (!problem.empty())
-    throw lt::RequestError("EnvironmentFileName '" + path + "': " + problem + " (fix the EXR)");
-  auto env = lucent::scene::environmentFromImage(img.width, img.height, radiance);
+  const auto texels = lucent::scene::screenEnvironmentTexels(
+      img.width, img.height, [&](int x, int y) { return glm::vec3(img.at(x, y)); });
+  if (!texels.problem.empty())
+    throw lt::RequestError("EnvironmentFileName '" + path + "': " + texels.problem +
+                           " (fix the EXR)");
+  if (!texels.note.empty())
+    vtkGenericWarningMacro("EnvironmentFileName '" << path << "': " << texels.note);
+  auto env = lucent::scene::environmentFromImage(img.width, img.height, [&](int x, int y) {
+    return texels.radiance[std::size_t(y) * std::size_t(img.width) + std::size_t(x)];
+  });
   env.source = path;
   return env;
 }
