@@ -6,6 +6,7 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/lib/apt-install-missing.sh chromium   # the report page's browser test (tests/report/)
 scripts/build.sh
+scripts/corpus.sh        # the real-data corpus (.corpus/, from Debian packages) that the realdata tests read
 (cd build && ctest --output-on-failure -j"$(nproc)")
 scripts/sanitize.sh      # the unit and integration tests under ASan + UBSan
 scripts/fuzz.sh          # libFuzzer on the mesh, EXR, volume and argument readers, 20 s each
