@@ -33,6 +33,10 @@ if [ -x build/lucent ]; then
 fi
 xvfb-run -a pvbatch tests/paraview/test_lucent_plugin.py "$plugin" build-paraview/screenshots "${checks[@]}"
 xvfb-run -a pvbatch examples/paraview_translucent.py "$plugin" build-paraview/screenshots/example.png
+# A real MRI through ParaView's own reader: the volume filter at ten thresholds, IsoValue alone set.
+scripts/corpus.sh
+xvfb-run -a pvbatch tests/paraview/test_lucent_real_scan.py "$plugin" .corpus/scans/ch2bet.nii.gz \
+  build-paraview/screenshots/real-scan.png
 # Data-parallel: the same surface split over 2 MPI ranks must give the one-process result.
 mpi=(mpiexec -n 2)
 [ "$(id -u)" -eq 0 ] && mpi+=(--allow-run-as-root)

@@ -6,8 +6,18 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
+
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkImageData.h>
+#include <vtkImageShrink3D.h>
+#include <vtkNIFTIImageReader.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
 
 #include <lucent/scene/mesh_check.hpp>
 
@@ -16,6 +26,7 @@
 #include "../../src/io/vtk_volume.hpp"
 #include "cli_run.hpp"
 #include "lucentScanSurface.h"
+#include "vtkLucentVolumeFilter.h"
 
 using lucent::test::contains;
 using lucent::test::lucentCli;
@@ -184,4 +195,39 @@ TEST_CASE("Real data's bad cases: no voxel at the threshold, an all-NaN probe, n
   CHECK(contains(open.err, "encloses nothing"));
   for (const Run* r : {&high, &probe, &open}) INFO(r->err);
   CHECK(!std::filesystem::exists(out));
+}
+
+TEST_CASE("vtkLucentVolumeFilter: a real MRI at ten thresholds, IsoValue the only property set") {
+  vtkNew<vtkNIFTIImageReader> reader;
+  reader->SetFileName(corpus("scans/ch2bet.nii.gz").c_str());
+  vtkNew<vtkImageShrink3D> shrink;  // 1 mm -> 4 mm voxels: per-vertex shading stays quick
+  shrink->SetInputConnection(reader->GetOutputPort());
+  shrink->SetShrinkFactors(4, 4, 4);
+  shrink->AveragingOn();
+  shrink->Update();
+  double range[2];
+  shrink->GetOutput()->GetScalarRange(range);
+  for (int i = 0; i < 10; ++i) {
+    const double iso = range[0] + (range[1] - range[0]) * i / 10.0;
+    vtkNew<vtkLucentVolumeFilter> filter;
+    filter->SetInputConnection(shrink->GetOutputPort());
+    filter->SetIsoValue(iso);
+    filter->Update();
+    vtkPolyData* out = filter->GetOutput();
+    INFO("iso " << iso << ": " << filter->GetChosenTechnique());
+    REQUIRE(out->GetNumberOfPoints() > 0);
+    vtkDataArray* radiance = out->GetPointData()->GetArray("Radiance");
+    REQUIRE(radiance != nullptr);
+    double sum = 0;
+    bool finite = true;
+    for (vtkIdType p = 0; p < radiance->GetNumberOfTuples(); ++p)
+      for (int c = 0; c < 3; ++c) {
+        const double v = radiance->GetComponent(p, c);
+        finite = finite && std::isfinite(v) && v >= 0;
+        sum += v;
+      }
+    CHECK(finite);
+    CHECK(sum > 0);
+    CHECK(out->GetFieldData()->GetAbstractArray("LucentPlan") != nullptr);
+  }
 }

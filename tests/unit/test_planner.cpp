@@ -279,3 +279,25 @@ TEST_CASE(
   CHECK_THROWS_AS(lp::readCalibration(dir + "/missing"), lp::CalibrationError);
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE(
+    "Where nothing that takes the scene carries multiple scattering, the best that takes it is "
+    "chosen and the plan says what it leaves out") {
+  TestScene s(30, "skin1", {kFront});
+  s.scene.medium.density = [](const glm::dvec3&) { return 1.0; };  // heterogeneous, as a scan
+  s.scene.medium.densityDescription = "a scan";
+  lp::Calibration c = calibrationAt(s.features());
+  c.settings.push_back(measured("cal", s.features(), "taulut", "defaults", 0.2, 0.05));
+  const lp::Plan plan = planOf(s, c, lp::Budget{});
+  REQUIRE(plan.choice);
+  CHECK(plan.choice->technique->name == "taulut");
+  CHECK(plan.termLeftOut.find("multiple scattering") != std::string::npos);
+  bool said = false;
+  for (const auto& line : lp::explain(plan, lp::Budget{}))
+    said = said || line.find("note: no technique that takes this scene") != std::string::npos;
+  CHECK(said);
+  // With no calibrated technique that takes it at all, there is still no choice.
+  const lp::Plan none = planOf(s, calibrationAt(s.features()), lp::Budget{});
+  CHECK(!none.choice);
+  CHECK(none.termLeftOut.empty());
+}

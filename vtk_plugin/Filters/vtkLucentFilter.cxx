@@ -342,6 +342,15 @@ lucent::scene::EnvironmentLight readEnvironment(const std::string& path) {
   return env;
 }
 
+/// What the registry's default technique, when it is `chosen`, cannot take in `scene` (the first
+/// unmet requirement); empty when `chosen` is another technique or takes the scene.
+std::string defaultCannotTake(const lt::Technique* chosen, const lt::SceneDescription& scene) {
+  if (chosen != &vtkLucentFilter::Techniques().defaultReference()) return "";
+  const auto missing =
+      lt::unmet(chosen->capabilities, lt::requirementsOf(scene, lt::vertexRequest(scene.mesh)));
+  return missing.empty() ? "" : missing.front();
+}
+
 /// The whole surface's vertex points that are this rank's own points, in its order.
 lt::ShadeRequest localRequest(const lucent::scene::TriangleMesh& whole,
                               const std::vector<vtkIdType>& wholeIndex) {
@@ -365,22 +374,26 @@ vtkLucentFilter::Request vtkLucentFilter::CheckRequest() const {
         "' is not a measured material; use one of: " + lucent::optics::measuredMaterialNames());
   r.material = *material;
   if (this->Technique == lucent::plan::kAutomatic) {
-    if (this->BudgetMs > 0) r.budget.seconds = this->BudgetMs / 1000;
-    if (this->MaxError > 0) r.budget.error = this->MaxError;
-    try {
-      r.calibration = lucent::plan::readCalibration(
-          lucent::plan::calibrationDirectory(this->CalibrationDirectory, LUCENT_SOURCE_DATA_DIR));
-    } catch (const lucent::plan::CalibrationError& e) {
-      throw lt::RequestError(std::string(e.what()) +
-                             " (or set CalibrationDirectory to a folder "
-                             "holding it)");
-    }
+    this->ReadPlanInputs(r);
   } else {
     r.technique = &Techniques().get(this->Technique);
     r.knobs = this->KnobsOf(*r.technique);
   }
   r.towardLight = unitTowardLight(this->LightDirection);
   return r;
+}
+
+void vtkLucentFilter::ReadPlanInputs(Request& r) const {
+  if (this->BudgetMs > 0) r.budget.seconds = this->BudgetMs / 1000;
+  if (this->MaxError > 0) r.budget.error = this->MaxError;
+  try {
+    r.calibration = lucent::plan::readCalibration(
+        lucent::plan::calibrationDirectory(this->CalibrationDirectory, LUCENT_SOURCE_DATA_DIR));
+  } catch (const lucent::plan::CalibrationError& e) {
+    throw lt::RequestError(std::string(e.what()) +
+                           " (or set CalibrationDirectory to a folder "
+                           "holding it)");
+  }
 }
 
 lt::KnobValues vtkLucentFilter::KnobsOf(const lt::Technique& technique) const {
@@ -411,6 +424,35 @@ std::vector<std::string> vtkLucentFilter::PlanTechnique(Request& request,
   request.technique = plan.choice->technique;
   request.knobs = request.technique->values(lp::knobPairs(plan.choice->knobs));
   return lp::explain(plan, request.budget);
+}
+
+std::vector<std::string> vtkLucentFilter::HandOverDefault(Request& request,
+                                                          const lt::SceneDescription& scene,
+                                                          const std::string& unmet) const {
+  const std::string why = "the default technique cannot take " + unmet;
+  this->ReadPlanInputs(request);
+  request.technique = nullptr;
+  try {
+    std::vector<std::string> plan =
+        this->PlanTechnique(request, scene, lt::vertexRequest(scene.mesh));
+    plan.insert(plan.begin(), why + "; the planner chose one that can");
+    return plan;
+  } catch (const lt::RequestError&) {
+    // No calibrated technique takes it: the first offered that does, at its defaults.
+    const lt::Requirements needs = lt::requirementsOf(scene, lt::vertexRequest(scene.mesh));
+    for (const lt::Technique* t : offered()) {
+      const lt::KnobValues defaults = t->values();
+      if (!lt::unmet(t->capabilities, needs).empty() ||
+          (t->validity && !t->validity(scene, defaults).empty()))
+        continue;
+      request.technique = t, request.knobs = defaults;
+      return {why +
+              "; the planner has no calibrated technique that can, so the first offered "
+              "that can: " +
+              t->name + " at its defaults"};
+    }
+    throw;
+  }
 }
 
 lt::SceneDescription& vtkLucentFilter::SceneFor(vtkDataObject* input,
@@ -527,10 +569,15 @@ int vtkLucentFilter::ShadeSurface(vtkDataObject* input, vtkPolyData* output,
     // the computation is in millimetres.
     output->ShallowCopy(surfaces.local.triangles);
     lt::SceneDescription& scene = this->SceneFor(input, surfaces.whole, request, medium);
-    // Every rank plans from the whole surface, so all choose the same.
-    const std::vector<std::string> plan =
-        request.technique ? std::vector<std::string>()
-                          : this->PlanTechnique(request, scene, lt::vertexRequest(scene.mesh));
+    // Every rank plans from the whole surface, so all choose the same. The default technique hands
+    // a scene it cannot take (a scan's heterogeneous medium) to the planner, as the CLI does.
+    const std::string unmet = defaultCannotTake(request.technique, scene);
+    std::vector<std::string> plan;
+    if (!unmet.empty()) {
+      plan = this->HandOverDefault(request, scene, unmet);
+    } else if (!request.technique) {
+      plan = this->PlanTechnique(request, scene, lt::vertexRequest(scene.mesh));
+    }
     const lt::ShadeRequest shade = localRequest(scene.mesh, surfaces.wholeIndex);
     const lt::Rendered result = this->LastRun->prepared.render(
         Techniques(), *request.technique, scene, request.knobs, shade, this->LastRun->geometry);

@@ -100,7 +100,9 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   ///@{
   /// The technique, by its registry name; default the first offered (the ground truth, reference).
   /// GetTechniqueName(i) lists those offered. "auto" (lucent::plan::kAutomatic): the planner's
-  /// choice for this surface, material and light within BudgetMs and MaxError (`lucent plan`).
+  /// choice for this surface, material and light within BudgetMs and MaxError (`lucent plan`). The
+  /// default hands a scene it cannot take (a scan's heterogeneous medium) to the planner too; the
+  /// output's field data "LucentPlan" says so.
   void SetTechnique(const char* name);
   const char* GetTechnique() const { return this->Technique.c_str(); }
   static int GetNumberOfTechniques();
@@ -202,6 +204,14 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   Request CheckRequest() const;
   /// The filter's knobs of `technique`, checked against its description.
   lucent::technique::KnobValues KnobsOf(const lucent::technique::Technique& technique) const;
+  /// The default technique cannot take `scene` (`unmet` says why): the planner's choice into
+  /// `request`, or, when it has none, the first offered technique that takes the scene; the plan's
+  /// lines, the first saying why.
+  std::vector<std::string> HandOverDefault(Request& request,
+                                           const lucent::technique::SceneDescription& scene,
+                                           const std::string& unmet) const;
+  /// The planner's budget (BudgetMs, MaxError) and calibration into `request`.
+  void ReadPlanInputs(Request& request) const;
   void WriteArrays(vtkPolyData* output, const lucent::technique::Rendered& result) const;
   /// With Technique "auto": the plan's technique and knobs for the scene, into `request`; its
   /// explanation, one line per decision.

@@ -103,6 +103,7 @@ inline std::vector<std::string> explain(const Plan& plan, const Budget& budget,
                     technique::numberText(kErrorResolution) + ")");
     if (!plan.terms.lit)
       out.push_back("  (the cheapest: with no light every technique renders the object black)");
+    if (!plan.termLeftOut.empty()) out.push_back("  note: " + plan.termLeftOut);
     if (choiceMissesSingleScattering(plan))
       out.push_back(
           "  note: the choice does not simulate single scattering, which this scene calls "

@@ -78,6 +78,10 @@ struct Plan {
   /// different from its was chosen instead (detail::mostAccurateWithin).
   std::optional<Candidate> mostAccurate;
   std::vector<std::string> excluded;            ///< "technique: why"
+  /// When no technique able to take the scene simulates every term it calls for: why the choice
+  /// came from those that take it, leaving a term out (e.g. a scan's heterogeneous medium shaded
+  /// at vertices: only single-scattering techniques take it); empty otherwise.
+  std::string termLeftOut;
   std::vector<std::string> outsideCalibration;  ///< features outside what was measured
 };
 
@@ -283,6 +287,26 @@ inline void choose(const Budget& budget, Plan& plan) {
 
 }  // namespace detail
 
+namespace detail {
+/// Every calibrated setting of every technique that serves `terms` into plan.candidates; the
+/// others, with why, into plan.excluded.
+inline void gatherCandidates(const technique::Registry& registry, const SceneFeatures& features,
+                             const Calibration& calibration, const Fit& fit, const TermPlan& terms,
+                             Plan& plan) {
+  for (const technique::Technique& t : registry.all()) {
+    const std::string why = unfit(t, fit, terms);
+    if (!why.empty()) {
+      plan.excluded.push_back(t.name + ": " + why);
+      continue;
+    }
+    std::vector<Candidate> settings = settingsOf(t, features, fit, calibration, terms);
+    if (settings.empty())
+      plan.excluded.push_back(t.name + ": " + whyNoSetting(t, fit, calibration));
+    for (auto& s : settings) plan.candidates.push_back(std::move(s));
+  }
+}
+}  // namespace detail
+
 /// The plan for a scene with these features; `fit` says where a technique or setting cannot run.
 inline Plan makePlan(const technique::Registry& registry, const SceneFeatures& features,
                      const Calibration& calibration, const Budget& budget, const Fit& fit) {
@@ -293,16 +317,22 @@ inline Plan makePlan(const technique::Registry& registry, const SceneFeatures& f
   if (!budget.given()) limits.error = kDefaultTargetError;
   plan.terms = decideTerms(features, calibration, plan.targetError);
   plan.outsideCalibration = detail::outsideOf(features, calibration);
-  for (const technique::Technique& t : registry.all()) {
-    const std::string why = detail::unfit(t, fit, plan.terms);
-    if (!why.empty()) {
-      plan.excluded.push_back(t.name + ": " + why);
-      continue;
+  detail::gatherCandidates(registry, features, calibration, fit, plan.terms, plan);
+  if (plan.candidates.empty() && plan.terms.lit) {
+    // Nothing that takes the scene carries every term: render with what takes it, and say so,
+    // rather than render nothing (the predicted error carries what is left out).
+    TermPlan takesScene = plan.terms;
+    takesScene.lit = false, takesScene.reach = technique::Reach::Point;
+    Plan relaxed;
+    detail::gatherCandidates(registry, features, calibration, fit, takesScene, relaxed);
+    if (!relaxed.candidates.empty()) {
+      plan.candidates = std::move(relaxed.candidates);
+      plan.termLeftOut =
+          "no technique that takes this scene simulates its multiple scattering at the reach it "
+          "needs; the choice is the best of those that take it, and leaves that out";
+    } else {
+      for (auto& e : relaxed.excluded) plan.excluded.push_back("(leaving a term out) " + e);
     }
-    std::vector<Candidate> settings = detail::settingsOf(t, features, fit, calibration, plan.terms);
-    if (settings.empty())
-      plan.excluded.push_back(t.name + ": " + detail::whyNoSetting(t, fit, calibration));
-    for (auto& s : settings) plan.candidates.push_back(std::move(s));
   }
   if (plan.terms.lit) {
     detail::choose(limits, plan);
