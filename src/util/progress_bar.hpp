@@ -1,9 +1,11 @@
 #pragma once
 /// @file progress_bar.hpp
-/// @brief A thread-safe progress bar on stderr for long CLI work; quiet when stderr is not a terminal
-/// except for a final line, so logs stay readable.
+/// @brief A thread-safe progress bar on stderr for long CLI work. When stderr is not a terminal (a
+/// log, a pipe) it writes a plain line every kLogInterval instead, so a user tailing a log sees
+/// that work goes on, and a final line.
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -18,14 +20,28 @@ class ProgressBar {
       : mLabel(std::move(label)), mEnabled(enabled), mTty(isatty(STDERR_FILENO)), mStart(Clock::now()) {}
   ~ProgressBar() { finish(); }
 
-  /// Thread-safe; redraws at most ten times a second.
+  /// Seconds between two progress lines in a log.
+  static constexpr int kLogInterval = 5;
+
+  /// Thread-safe; redraws at most ten times a second on a terminal, a line every kLogInterval
+  /// seconds elsewhere.
   void update(double fraction) {
-    if (!mEnabled || !mTty) return;
+    if (!mEnabled) return;
     const auto now = Clock::now();
+    const auto interval =
+        mTty ? std::chrono::milliseconds(100) : std::chrono::seconds(kLogInterval);
     std::unique_lock lock(mMutex, std::try_to_lock);
-    if (!lock.owns_lock() || now - mLastDraw < std::chrono::milliseconds(100)) return;
+    if (!lock.owns_lock() || now - (mTty ? mLastDraw : std::max(mLastDraw, mStart)) < interval)
+      return;
     mLastDraw = now;
-    draw(fraction, now);
+    if (mTty) {
+      draw(fraction, now);
+    } else {
+      const double elapsed = std::chrono::duration<double>(now - mStart).count();
+      std::fprintf(stderr, "%s: %d %% after %.0f s\n", mLabel.c_str(), int(fraction * 100),
+                   elapsed);
+      std::fflush(stderr);
+    }
   }
 
   void finish() {

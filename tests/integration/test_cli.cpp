@@ -795,6 +795,25 @@ TEST_CASE(
                              dir);
   INFO(ramp.err);
   CHECK(ramp.code == 0);
+  // A transfer function that is one pair of coefficients everywhere is a homogeneous medium: every
+  // dipole technique takes it; one that varies is not.
+  for (const char* method : {"reference", "tsis", "hybrid"}) {
+    const Run uniform =
+        lucentCli("render --volume " + ball +
+                      " --iso 50 --transfer 'points:0/0.032,0.17,0.48/0.74,0.88,1.01;"
+                      "700/0.032,0.17,0.48/0.74,0.88,1.01' --method " +
+                      method + " --width 16 --height 16 --quiet --out " + dir / "u.exr",
+                  dir);
+    INFO(method << ": " << uniform.err);
+    CHECK(uniform.code == 0);
+  }
+  const Run varying = lucentCli("render --volume " + ball +
+                                    " --iso 50 --transfer 'points:0/0.01,0.02,0.03/0.5,0.5,0.5;700/"
+                                    "0.1,0.2,0.3/2,2,2' --method reference --out " +
+                                    dir / "x.png",
+                                dir);
+  CHECK(varying.code == 2);
+  CHECK(contains(varying.err, "cannot take a heterogeneous medium"));
   const Run missing = lucentCli(
       "render --volume " + seg + " --transfer labels:0=none,1=Skin1 --out " + dir / "x.png", dir);
   CHECK(missing.code == 2);

@@ -35,6 +35,10 @@ struct ScanMedium {
   std::string description;
   /// Labels: 1 where the label has a material, 0 elsewhere (contoured at 1/2 for the surface).
   std::shared_ptr<const scene::VoxelGrid> mask;
+  /// The coefficients everywhere inside, when the function is constant there (one point, points
+  /// that all agree, or labels that all name one material): a homogeneous medium, which every
+  /// dipole technique takes.
+  std::optional<Coefficients> uniform;
 };
 
 namespace transfer {
@@ -109,6 +113,12 @@ inline ScanMedium labels(const std::string& what, const std::string& list,
     coefficients[label] = c;
     out.maxSigmaT = glm::max(out.maxSigmaT, c.sigmaA + c.sigmaSPrime);
   }
+  std::set<const optics::Material*> named;
+  for (const auto& [label, m] : table)
+    if (m) named.insert(&*m);
+  if (named.size() == 1)
+    out.uniform = Coefficients{glm::dvec3((*named.begin())->sigmaA),
+                               glm::dvec3((*named.begin())->sigmaSPrime)};
   out.field = [scan, coefficients](const glm::dvec3& p) {
     const auto it = coefficients.find(std::lround(nearestValue(*scan, p)));
     return it == coefficients.end() ? Coefficients{} : it->second;
@@ -140,6 +150,8 @@ inline ScanMedium points(const std::string& what, const std::string& list,
             [](const Point& a, const Point& b) { return a.value < b.value; });
   ScanMedium out;
   for (const auto& p : pts) out.maxSigmaT = glm::max(out.maxSigmaT, p.c.sigmaA + p.c.sigmaSPrime);
+  if (std::all_of(pts.begin(), pts.end(), [&](const Point& p) { return p.c == pts.front().c; }))
+    out.uniform = pts.front().c;
   out.field = [scan, pts](const glm::dvec3& x) {
     const double v = scan->sample(x);
     if (v <= pts.front().value) return pts.front().c;
@@ -185,6 +197,12 @@ void normalisedDensity(std::shared_ptr<const scene::VoxelGrid> scan, const ToSca
 template <class ToScan>
 void transferMedium(const ScanMedium& tf, const ToScan& scanAt, const std::string& name,
                     Medium& medium) {
+  if (tf.uniform) {  // homogeneous: the material is the function's one pair of coefficients
+    medium.material.name = "the transfer function's uniform medium";
+    medium.material.sigmaA = tf.uniform->sigmaA;
+    medium.material.sigmaSPrime = tf.uniform->sigmaSPrime;
+    return;
+  }
   medium.coefficients = [field = tf.field, scanAt](const glm::dvec3& p) {
     return field(scanAt(p));
   };
