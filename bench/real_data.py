@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Every technique on the real-data corpus (scripts/corpus.sh) against the path tracer: wall time and peak
 memory of the whole run (reading, surface, checks, technique), the technique's own time, and the error
-against a long path-traced image of the same scene. Writes the table (Markdown and CSV) and one picture per
-run into OUTDIR; docs/real-data.md shows them.
+against a long path-traced image of the same scene. Writes the table (Markdown and CSV) and, per case, one
+side-by-side picture (the truth, then each technique in the table's order) into OUTDIR; docs/real-data.md
+shows them.
 
     python3 bench/real_data.py build/lucent [--out docs/real-data] [--size 160] [--quick]
 --quick: 64x64 images and short truths (a minute), to try the script; the docs use the default.
@@ -136,7 +137,15 @@ def main():
         for case, label, wall, mib, tech, rel, ratio, _ in rows:
             f.write("| %s | %s | %s | %s | %s | %s | %s |\n" % (case, label, fmt(wall, 2), fmt(mib, 0),
                                                                   fmt(tech, 2), fmt(rel, 3), ratio or "-"))
-    print("real_data.py: %d runs; %s/table.md, table.csv, pictures, runs.log" % (len(rows), args.out), flush=True)
+    # One side-by-side picture per case: the truth first, then each technique in the table's order.
+    montage = os.path.join(os.path.dirname(os.path.abspath(__file__)), "montage.py")
+    for index in range(len(cases())):
+        pictures = [r[7] for r in rows if r[7] and os.path.basename(r[7]).startswith("case%d-" % index)]
+        subprocess.run(["/usr/bin/python3", montage, os.path.join(args.out, "case%d.png" % index), *pictures],
+                       check=True)
+        for picture in pictures:
+            os.remove(picture)
+    print("real_data.py: %d runs; %s/table.md, table.csv, case*.png, runs.log" % (len(rows), args.out), flush=True)
 
 
 if __name__ == "__main__":

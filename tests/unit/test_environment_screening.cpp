@@ -52,7 +52,7 @@ TEST_CASE("the negative share's threshold: below it clamped, above it refused") 
   }
 }
 
-TEST_CASE("a few NaN texels are clamped; many, an infinite or a huge texel are refused") {
+TEST_CASE("a few NaN texels are clamped, while many NaN, an infinite or a huge texel are refused") {
   Probe few;
   few.texels[3].x = std::nanf("");
   CHECK(few.screen().problem.empty());

@@ -34,7 +34,7 @@ TEST_CASE("the octant triangle subtends an eighth of the sphere") {
         doctest::Approx(-0.125).epsilon(1e-12));
 }
 
-TEST_CASE("a closed surface: 1 inside, 0 outside; an open hemisphere: 1/2 at its centre") {
+TEST_CASE("a closed surface: 1 inside and 0 outside, an open hemisphere: 1/2 at its centre") {
   const TriangleMesh sphere = shapes::sphere(1.0, 4);
   const TriangleSoupField field(sphere);
   std::mt19937 rng(3);

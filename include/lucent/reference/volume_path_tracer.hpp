@@ -274,6 +274,13 @@ class VolumePathTracer {
     for (int crossings = 0; crossings < 64; ++crossings) {
       const auto hit = mCaster.intersect(x, dir, 0, length);
       const double seg = hit ? hit->t : length;
+      if (!hit && !std::isfinite(length) && !mScene.media[medium].vacuum()) {
+        // A medium with no surface ahead on an endless segment (towards a directional light): the
+        // path leaked out through a crossing the ray caster missed; ratio tracking there would walk
+        // forever where the density is zero.
+        ++st.leakedPaths;
+        return glm::dvec3(0);
+      }
       if (!mScene.media[medium].vacuum())
         tr *= transmittance(mScene.media[medium], x, dir, seg, rng, st.medium);
       if (!hit) {

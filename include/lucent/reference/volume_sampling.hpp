@@ -141,6 +141,7 @@ inline glm::dvec3 transmittance(const Medium& m, const glm::dvec3& x, const glm:
   const double sigmaBar = detail::majorant(m);
   glm::dvec3 tr(1);
   if (!(sigmaBar > 0)) return tr;
+  if (!std::isfinite(length)) return glm::dvec3(0);  // an endless segment: the walk would not end
   for (double t = 0;;) {
     t -= std::log(1 - rng.uniform()) / sigmaBar;
     if (t >= length) return tr;
