@@ -41,7 +41,7 @@ def cases():
          [("reference", ["--method", "reference"]), ("tsis", ["--method", "tsis"]),
           ("hybrid", ["--method", "hybrid"]), ("taulut", ["--method", "taulut"]),
           ("pathtrace 16 spp", ["--method", "pathtrace", "--knob", "spp=16"])]),
-        ("MRI head (ch2, 181x217x181), iso 60, scan as density", head, "spp=256",
+        ("MRI head (ch2, 181x217x181), iso 60, scan as density", head, "spp=128",
          [("taulut", ["--method", "taulut"]), ("voxel-single", ["--method", "voxel-single"]),
           ("pathtrace 16 spp", ["--method", "pathtrace", "--knob", "spp=16"])]),
         ("nefertiti (34 boundary edges, --repair) under Blender's city probe",

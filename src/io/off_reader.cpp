@@ -43,6 +43,14 @@ struct OffLines {
     }
     return false;
   }
+  /// The line of item `i` of `n` (`what`: "vertices", "faces"), or the error that the file ends.
+  void require(std::istringstream& words, std::uint64_t i, std::uint64_t n, const char* what,
+               const std::string& path) {
+    if (!next(words))
+      fail(path, number,
+           "the file ends after " + std::to_string(i) + " of " + std::to_string(n) + " " + what,
+           "the file is truncated; re-export it");
+  }
 };
 
 /// A whole number of at most `most` from `words`, or the error naming `what`.
@@ -115,11 +123,7 @@ vtkSmartPointer<vtkPolyData> readOff(const std::string& path) {
   points->SetDataTypeToDouble();
   points->Allocate(vtkIdType(vertexCount));
   for (std::uint64_t v = 0; v < vertexCount; ++v) {
-    if (!lines.next(words))
-      fail(path, lines.number,
-           "the file ends after " + std::to_string(v) + " of " + std::to_string(vertexCount) +
-               " vertices",
-           "the file is truncated; re-export it");
+    lines.require(words, v, vertexCount, "vertices", path);
     const double x = coordinate(words, path, lines.number);
     const double y = coordinate(words, path, lines.number);
     points->InsertNextPoint(x, y, coordinate(words, path, lines.number));
@@ -127,11 +131,7 @@ vtkSmartPointer<vtkPolyData> readOff(const std::string& path) {
   vtkNew<vtkCellArray> polys;
   std::vector<vtkIdType> ids;
   for (std::uint64_t f = 0; f < faceCount; ++f) {
-    if (!lines.next(words))
-      fail(path, lines.number,
-           "the file ends after " + std::to_string(f) + " of " + std::to_string(faceCount) +
-               " faces",
-           "the file is truncated; re-export it");
+    lines.require(words, f, faceCount, "faces", path);
     const auto corners = count(words, kMaxFaceCorners, "a face's corner count", path, lines.number);
     ids.resize(corners);
     for (auto& id : ids) {

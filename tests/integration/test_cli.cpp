@@ -103,6 +103,14 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
         << "ply\nformat ascii 1.0\nelement vertex 1000000000\nproperty float x\n"
         << "end_header\n0\n";
   }
+  {  // OFF: counts beyond the file, an index past the vertices, binary, a vertex cut short
+    std::ofstream(dir / "huge.off") << "OFF\n100000000 1 0\n0 0 0\n";
+    std::ofstream(dir / "tet.off") << "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n"
+                                   << "3 0 3 2\n3 1 2 3\n";
+    std::ofstream(dir / "index.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n";
+    std::ofstream(dir / "binary.off") << "OFF BINARY\n" << std::string(64, '\0');
+    std::ofstream(dir / "short.off") << "OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n";
+  }
   const std::string stlFacet =
       "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n";
   {
@@ -179,6 +187,14 @@ TEST_CASE("Bad input: one line naming the problem and the fix, exit code 2, noth
       {"render --out " + out + " --mesh " + dir / "faces.ply", "truncated or its header is wrong"},
       {"bench --mesh " + dir / "faces.ply", "truncated or its header is wrong"},
       {"render --out " + out + " --mesh " + dir / "huge.ply", "more than lucent reads"},
+      {"render --out " + out + " --mesh " + dir / "huge.off", "more than its"},
+      {"render --out " + out + " --mesh " + dir / "index.off", "a face names vertex 7 of 3"},
+      {"render --out " + out + " --mesh " + dir / "binary.off", "binary OFF is not read"},
+      {"render --out " + out + " --mesh " + dir / "short.off", "a vertex has '', not a finite"},
+      {"render --out " + out + " --mesh " + dir / "tet.off --repair-resolution 64",
+       "--repair-resolution goes with --repair"},
+      {"render --out " + out + " --mesh " + dir / "tet.off --repair --repair-resolution 8",
+       "--repair-resolution 8 is out of range"},
       {"render --out " + out + " --light dir:0,1,0:1e308",
        "intensities must lie in [0, 1e12], not 1e+308"},
       {"render --out " + out + " --light env:uniform:-1",
