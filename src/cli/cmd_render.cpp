@@ -69,9 +69,11 @@ std::pair<const technique::Technique*, technique::KnobValues> plannedTechnique(
   const plan::Plan p = planScene(args, scene, pixels, budget);
   enforceHardLimit(p, budget);
   if (!p.choice)
-    throw InputError(
-        "lucent render: --method auto: no calibrated technique can serve this scene (lucent plan "
-        "--explain says why); name a method");
+    throw InputError(std::string("lucent render: ") +
+                     (args.has("method") ? "--method auto"
+                                         : "no --method, and the default cannot take the scene") +
+                     ": no calibrated technique can serve this scene (lucent plan --explain says "
+                     "why); name a --method that takes it (lucent techniques lists what each can)");
   std::fprintf(stderr, "lucent render: auto: %s%s\n", plan::candidateLine(*p.choice).c_str(),
                p.meetsBudget ? "" : " (the closest: no setting meets the budget)");
   for (const auto& o : p.outsideCalibration)

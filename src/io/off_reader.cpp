@@ -53,19 +53,20 @@ struct OffLines {
   }
 };
 
-/// A whole number of at most `most` from `words`, or the error naming `what`.
+/// A whole number of at most `most` from `words`, or the error naming `what` with `fix` (for a
+/// number too large: `tooLarge`).
 std::uint64_t count(std::istringstream& words, std::uint64_t most, const std::string& what,
-                    const std::string& path, std::size_t line) {
+                    const std::string& path, std::size_t line,
+                    const char* fix = "the line after OFF gives the vertex, face and edge counts",
+                    const char* tooLarge = "decimate the mesh first") {
   std::string w;
   words >> w;
   char* end = nullptr;
   const long long v = std::strtoll(w.c_str(), &end, 10);
   if (w.empty() || *end != '\0' || v < 0)
-    fail(path, line, what + " is '" + w + "', not a whole number",
-         "the line after OFF gives the vertex, face and edge counts");
+    fail(path, line, what + " is '" + w + "', not a whole number", fix);
   if (std::uint64_t(v) > most)
-    fail(path, line, what + " is " + w + ", more than lucent reads (" + std::to_string(most) + ")",
-         "decimate the mesh first");
+    fail(path, line, what + " is " + w + ", more than " + std::to_string(most), tooLarge);
   return std::uint64_t(v);
 }
 
@@ -105,7 +106,10 @@ std::array<std::uint64_t, 2> readHeader(OffLines& lines, const std::string& path
   const auto vertices = count(words, kMaxMeshPoints, "the vertex count", path, line);
   const auto faces = count(words, kMaxMeshFaces, "the face count", path, line);
   // Each vertex takes at least 6 bytes ("0 0 0\n") and each face 8: the file must hold them.
-  const auto bytes = std::filesystem::file_size(path);
+  std::error_code sizeError;
+  const auto bytes = std::filesystem::file_size(path, sizeError);
+  if (sizeError)
+    fail(path, 0, "its size cannot be read (" + sizeError.message() + ")", "give a regular file");
   if (vertices * 6 + faces * 8 > bytes)
     fail(path, line,
          "it declares " + std::to_string(vertices) + " vertices and " + std::to_string(faces) +
@@ -132,14 +136,18 @@ vtkSmartPointer<vtkPolyData> readOff(const std::string& path) {
   std::vector<vtkIdType> ids;
   for (std::uint64_t f = 0; f < faceCount; ++f) {
     lines.require(words, f, faceCount, "faces", path);
-    const auto corners = count(words, kMaxFaceCorners, "a face's corner count", path, lines.number);
+    const char* faceLine = "a face line is N i0 ... i(N-1): whole numbers";
+    const auto corners = count(words, kMaxFaceCorners, "a face's corner count", path, lines.number,
+                               faceLine, "split the face into smaller ones");
     ids.resize(corners);
     for (auto& id : ids) {
-      id = vtkIdType(count(words, kMaxMeshPoints, "a face's vertex index", path, lines.number));
-      if (std::uint64_t(id) >= vertexCount)
+      const auto index = count(words, kMaxMeshPoints, "a face's vertex index", path, lines.number,
+                               faceLine, "indices must name a vertex; re-export the mesh");
+      if (index >= vertexCount)
         fail(path, lines.number,
-             "a face names vertex " + std::to_string(id) + " of " + std::to_string(vertexCount),
+             "a face names vertex " + std::to_string(index) + " of " + std::to_string(vertexCount),
              "indices start at 0 and must name a vertex; re-export the mesh");
+      id = vtkIdType(index);
     }
     if (corners >= 3) polys->InsertNextCell(vtkIdType(ids.size()), ids.data());
   }

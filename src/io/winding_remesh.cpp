@@ -100,8 +100,9 @@ void signedField(const scene::TriangleSoupField& field, scene::VoxelGrid& g) {
   util::tbbFor(band.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
       const std::size_t n = band[i];
-      // At most a voxel and a half: past that the crossing is a closed hole, not the soup.
-      const double d = std::min(field.distance(nodePosition(g, n)), 1.5 * h);
+      // Past a voxel and a half the crossing is a closed hole, not the soup.
+      // At most a voxel and a half; at least a trace, so a node on the soup keeps its side.
+      const double d = std::clamp(field.distance(nodePosition(g, n)), 1e-6 * h, 1.5 * h);
       g.values[n] = float(g.values[n] > 0 ? d : -d);
     }
   });
@@ -124,8 +125,15 @@ std::pair<double, double> vertexDistances(const scene::TriangleMesh& from,
 RemeshResult remeshByWindingNumber(const scene::TriangleMesh& soup,
                                    const scene::TriangleMesh& input, int resolution,
                                    const std::string& what) {
+  const scene::Bounds bounds = soup.bounds();
+  const glm::dvec3 extent = bounds.hi - bounds.lo;
+  if (soup.triangles.empty() || !(std::max({extent.x, extent.y, extent.z}) > 0) ||
+      !std::isfinite(bounds.diagonal()))
+    throw InputError(what +
+                     " encloses nothing: its faces have no extent (every point at one "
+                     "place); give a mesh of a solid object");
   const scene::TriangleSoupField field(soup);
-  scene::VoxelGrid grid = gridAround(soup.bounds(), resolution);
+  scene::VoxelGrid grid = gridAround(bounds, resolution);
   signedField(field, grid);
   if (std::none_of(grid.values.begin(), grid.values.end(), [](float v) { return v > 0; }))
     throw InputError(what +

@@ -15,7 +15,8 @@ namespace lucent::io {
 
 /// Voxels along the longest side of the mesh's bounding box, by default and at most.
 inline constexpr int kDefaultRemeshResolution = 128;
-inline constexpr int kMinRemeshResolution = 16, kMaxRemeshResolution = 1024;
+/// 512 keeps the grid and its copies under about 2 GB (134 M nodes).
+inline constexpr int kMinRemeshResolution = 16, kMaxRemeshResolution = 512;
 
 struct RemeshResult {
   scene::TriangleMesh mesh;  ///< closed, manifold, outward; the input's units

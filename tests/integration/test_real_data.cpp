@@ -195,7 +195,14 @@ TEST_CASE("Real data's bad cases: no voxel at the threshold, an all-NaN probe, n
   const Run open = lucentCli("render --mesh " + dir / "sheet.off" + " --repair --out " + out, dir);
   CHECK(open.code == 2);
   CHECK(contains(open.err, "encloses nothing"));
-  for (const Run* r : {&high, &probe, &open}) INFO(r->err);
+  {
+    std::ofstream point(dir / "point.off");  // every corner at one place: no extent at all
+    point << "OFF\n3 1 0\n1 1 1\n1 1 1\n1 1 1\n3 0 1 2\n";
+  }
+  const Run point = lucentCli("render --mesh " + dir / "point.off" + " --repair --out " + out, dir);
+  CHECK(point.code == 2);
+  CHECK(contains(point.err, "has no polygons"));  // the reader's weld leaves nothing to repair
+  for (const Run* r : {&high, &probe, &open, &point}) INFO(r->err);
   CHECK(!std::filesystem::exists(out));
 }
 

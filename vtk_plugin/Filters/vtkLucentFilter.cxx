@@ -430,9 +430,9 @@ std::vector<std::string> vtkLucentFilter::HandOverDefault(Request& request,
                                                           const lt::SceneDescription& scene,
                                                           const std::string& unmet) const {
   const std::string why = "the default technique cannot take " + unmet;
-  this->ReadPlanInputs(request);
   request.technique = nullptr;
   try {
+    this->ReadPlanInputs(request);  // no calibration: the fallback below
     std::vector<std::string> plan =
         this->PlanTechnique(request, scene, lt::vertexRequest(scene.mesh));
     plan.insert(plan.begin(), why + "; the planner chose one that can");

@@ -326,12 +326,16 @@ inline Plan makePlan(const technique::Registry& registry, const SceneFeatures& f
     Plan relaxed;
     detail::gatherCandidates(registry, features, calibration, fit, takesScene, relaxed);
     if (!relaxed.candidates.empty()) {
+      plan.excluded = std::move(relaxed.excluded);  // what cannot even take the scene
       plan.candidates = std::move(relaxed.candidates);
       plan.termLeftOut =
           "no technique that takes this scene simulates its multiple scattering at the reach it "
           "needs; the choice is the best of those that take it, and leaves that out";
     } else {
-      for (auto& e : relaxed.excluded) plan.excluded.push_back("(leaving a term out) " + e);
+      // Why those that take the scene have no setting either (the first pass named the rest).
+      for (auto& e : relaxed.excluded)
+        if (std::find(plan.excluded.begin(), plan.excluded.end(), e) == plan.excluded.end())
+          plan.excluded.push_back("(leaving a term out) " + e);
     }
   }
   if (plan.terms.lit) {

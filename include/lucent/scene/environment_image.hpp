@@ -67,9 +67,9 @@ ScreenedTexels screenEnvironmentTexels(int width, int height, PixelAt&& pixel) {
       out.radiance.push_back(p);
     }
   if (!out.problem.empty()) return out;
-  const double values = 3.0 * double(out.radiance.size());
+  const std::size_t values = 3 * out.radiance.size();
   std::ostringstream o;
-  if (double(nans) > kNegligibleEnergyShare * values)
+  if (double(nans) > kNegligibleEnergyShare * double(values))
     o << nans << " of " << values << " texel values are NaN (more than "
       << 100 * kNegligibleEnergyShare << " %); an environment map needs finite values";
   else if (negative > kNegligibleEnergyShare * total)

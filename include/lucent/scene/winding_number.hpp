@@ -29,14 +29,33 @@ namespace detail {
 inline double solidAngle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
   const double la = glm::length(a), lb = glm::length(b), lc = glm::length(c);
   const double numerator = glm::dot(a, glm::cross(b, c));
+  // In the triangle's plane the angle jumps between -2 pi and 2 pi (atan2's branch by the sign of a
+  // zero): a point on the surface gets 0 from it, so an open sheet's own points are not inside.
+  if (numerator == 0) return 0;
   const double denominator =
       la * lb * lc + glm::dot(a, b) * lc + glm::dot(a, c) * lb + glm::dot(b, c) * la;
   return 2.0 * std::atan2(numerator, denominator);
 }
 
-/// The point of triangle abc nearest to p (Ericson, Real-Time Collision Detection, 5.1.5).
+/// The point of segment ab nearest to p (a point when a == b).
+inline glm::dvec3 closestOnSegment(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b) {
+  const glm::dvec3 ab = b - a;
+  const double len2 = glm::dot(ab, ab);
+  return len2 > 0 ? a + ab * std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : a;
+}
+
+/// The point of triangle abc nearest to p (Ericson, Real-Time Collision Detection, 5.1.5); of its
+/// edges when it has no area (the regions' divisions would be 0 / 0).
 inline glm::dvec3 closestOnTriangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
                                     const glm::dvec3& c) {
+  const glm::dvec3 n = glm::cross(b - a, c - a);
+  if (!(glm::dot(n, n) > 0)) {
+    const glm::dvec3 e[3] = {closestOnSegment(p, a, b), closestOnSegment(p, b, c),
+                             closestOnSegment(p, c, a)};
+    auto d2 = [&](const glm::dvec3& q) { return glm::dot(q - p, q - p); };
+    return d2(e[0]) <= d2(e[1]) ? (d2(e[0]) <= d2(e[2]) ? e[0] : e[2])
+                                : (d2(e[1]) <= d2(e[2]) ? e[1] : e[2]);
+  }
   const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
   const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
   if (d1 <= 0 && d2 <= 0) return a;
@@ -83,10 +102,9 @@ class TriangleSoupField {
   double windingNumber(const glm::dvec3& p) const {
     if (mNodes.empty()) return 0;
     double sum = 0;
-    std::vector<std::uint32_t> stack{0};
+    Stack stack;
     while (!stack.empty()) {
-      const Node& n = mNodes[stack.back()];
-      stack.pop_back();
+      const Node& n = mNodes[stack.pop()];
       const glm::dvec3 toCentre = n.centre - p;
       const double d2 = glm::dot(toCentre, toCentre);
       if (d2 > kFarRatio * kFarRatio * n.radius * n.radius) {
@@ -96,7 +114,7 @@ class TriangleSoupField {
           sum += detail::solidAngle(corner(mOrder[i], 0) - p, corner(mOrder[i], 1) - p,
                                     corner(mOrder[i], 2) - p);
       } else {
-        stack.push_back(n.first), stack.push_back(n.first + 1);
+        stack.push(n.first), stack.push(n.first + 1);
       }
     }
     return sum / (4.0 * 3.14159265358979323846);
@@ -106,14 +124,13 @@ class TriangleSoupField {
   double distance(const glm::dvec3& p) const {
     double best2 = std::numeric_limits<double>::infinity();
     if (mNodes.empty()) return best2;
-    std::vector<std::uint32_t> stack{0};
+    Stack stack;
     while (!stack.empty()) {
-      const Node& n = mNodes[stack.back()];
-      stack.pop_back();
+      const Node& n = mNodes[stack.pop()];
       const glm::dvec3 gap = glm::max(glm::max(n.lo - p, p - n.hi), glm::dvec3(0));
       if (glm::dot(gap, gap) >= best2) continue;
       if (n.count == 0) {
-        stack.push_back(n.first), stack.push_back(n.first + 1);
+        stack.push(n.first), stack.push(n.first + 1);
         continue;
       }
       for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
@@ -128,6 +145,16 @@ class TriangleSoupField {
 
  private:
   static constexpr std::uint32_t kLeafSize = 8;
+  /// Nodes still to visit, depth first; no allocation per query. A median split halves every level,
+  /// so the tree is at most 30 deep for 2^32 triangles and the stack holds at most one node a level
+  /// plus one.
+  struct Stack {
+    std::array<std::uint32_t, 96> items{};
+    int size = 1;  // starts with the root, node 0
+    bool empty() const { return size == 0; }
+    void push(std::uint32_t i) { items[std::size_t(size++)] = i; }
+    std::uint32_t pop() { return items[std::size_t(--size)]; }
+  };
   /// A cluster: `count` triangles from mOrder[first] (a leaf), or children first and first + 1.
   struct Node {
     glm::dvec3 lo{0}, hi{0};   ///< bounds of its triangles' corners

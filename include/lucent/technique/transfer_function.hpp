@@ -113,12 +113,15 @@ inline ScanMedium labels(const std::string& what, const std::string& list,
     coefficients[label] = c;
     out.maxSigmaT = glm::max(out.maxSigmaT, c.sigmaA + c.sigmaSPrime);
   }
-  std::set<const optics::Material*> named;
-  for (const auto& [label, m] : table)
-    if (m) named.insert(&*m);
-  if (named.size() == 1)
-    out.uniform = Coefficients{glm::dvec3((*named.begin())->sigmaA),
-                               glm::dvec3((*named.begin())->sigmaSPrime)};
+  std::optional<Coefficients> only;  // the one material every labelled voxel has, if so
+  bool one = true;
+  for (const auto& [label, m] : table) {
+    if (!m) continue;
+    const Coefficients c{glm::dvec3(m->sigmaA), glm::dvec3(m->sigmaSPrime)};
+    one = one && (!only || *only == c);
+    only = c;
+  }
+  if (one && only) out.uniform = only;
   out.field = [scan, coefficients](const glm::dvec3& p) {
     const auto it = coefficients.find(std::lround(nearestValue(*scan, p)));
     return it == coefficients.end() ? Coefficients{} : it->second;
