@@ -31,15 +31,31 @@ if [ -x build/lucent ]; then
     --out build-paraview/environment.exr > /dev/null
   checks=(build-paraview/techniques.json build-paraview/environment.exr)
 fi
-xvfb-run -a pvbatch tests/paraview/test_lucent_plugin.py "$plugin" build-paraview/screenshots "${checks[@]}"
-xvfb-run -a pvbatch examples/paraview_translucent.py "$plugin" build-paraview/screenshots/example.png
+# pvbatch under a fresh Xvfb; tried once more only when the X server refused the connection ("bad X
+# server connection": 3 of 5 runs of this stage on the development machine, at a different pvbatch
+# each time), never for a failed check.
+onx() {
+  local log
+  log=$(mktemp)
+  if xvfb-run -a "$@" 2>&1 | tee "$log"; [ "${PIPESTATUS[0]}" -eq 0 ]; then rm -f "$log"; return 0; fi
+  if grep -q "bad X server connection" "$log"; then
+    rm -f "$log"
+    echo "lucent paraview: the X server refused the connection; once more under a fresh one" >&2
+    xvfb-run -a "$@"
+    return
+  fi
+  rm -f "$log"
+  return 1
+}
+onx pvbatch tests/paraview/test_lucent_plugin.py "$plugin" build-paraview/screenshots "${checks[@]}"
+onx pvbatch examples/paraview_translucent.py "$plugin" build-paraview/screenshots/example.png
 # A real MRI through ParaView's own reader: the volume filter at ten thresholds, IsoValue alone set.
 scripts/corpus.sh
-xvfb-run -a pvbatch tests/paraview/test_lucent_real_scan.py "$plugin" .corpus/scans/ch2bet.nii.gz \
+onx pvbatch tests/paraview/test_lucent_real_scan.py "$plugin" .corpus/scans/ch2bet.nii.gz \
   build-paraview/screenshots/real-scan.png
 # Data-parallel: the same surface split over 2 MPI ranks must give the one-process result.
 mpi=(mpiexec -n 2)
 [ "$(id -u)" -eq 0 ] && mpi+=(--allow-run-as-root)
-xvfb-run -a pvbatch tests/paraview/test_lucent_mpi.py "$plugin" build-paraview/mpi-1.csv
-xvfb-run -a "${mpi[@]}" pvbatch --mpi tests/paraview/test_lucent_mpi.py "$plugin" build-paraview/mpi-2.csv \
+onx pvbatch tests/paraview/test_lucent_mpi.py "$plugin" build-paraview/mpi-1.csv
+onx "${mpi[@]}" pvbatch --mpi tests/paraview/test_lucent_mpi.py "$plugin" build-paraview/mpi-2.csv \
   build-paraview/mpi-1.csv
