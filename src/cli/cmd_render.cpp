@@ -86,8 +86,7 @@ std::pair<const technique::Technique*, technique::KnobValues> plannedTechnique(
 bool defaultCannotServe(const Args& args, const technique::Technique& fallback, const Scene& scene,
                         std::optional<technique::ShadeRequest>& pixels) {
   pixels = technique::pixelRequest(scene.camera, scene);
-  const auto missing =
-      technique::unmet(fallback.capabilities, technique::requirementsOf(scene, *pixels));
+  const auto missing = technique::unmetBy(fallback, scene, *pixels);
   if (missing.empty()) return false;
   if (args.has("knob"))
     args.fail("the default technique '" + fallback.name + "' cannot take " + missing.front() +

@@ -104,9 +104,7 @@ scene::Light parseLight(const Args& args, const std::string& text, double diag,
     if (!texels.note.empty())
       std::fprintf(stderr, "lucent %s: --light %s: %s\n", args.command().c_str(), text.c_str(),
                    texels.note.c_str());
-    env = scene::environmentFromImage(img.width, img.height, [&](int x, int y) {
-      return texels.radiance[std::size_t(y) * std::size_t(img.width) + std::size_t(x)];
-    });
+    env = scene::environmentFromTexels(img.width, img.height, texels);
     env.source = first;
     env.scale = second.empty() ? 1.0 : parseNumber(second, what);
     checkLightValues(args, text, glm::dvec3(env.scale));

@@ -87,21 +87,12 @@ void signedField(const scene::TriangleSoupField& field, scene::VoxelGrid& g) {
           classifyBlock(field, g, lo, glm::min(lo + kBlock, g.dims) - 1);
         }
       });
-  std::vector<std::size_t> band;
-  std::size_t nb[6];
-  for (std::size_t n = 0; n < g.values.size(); ++n) {
-    const int count = scene::detail::gridNeighbours(g.dims, n, nb);
-    for (int c = 0; c < count; ++c)
-      if ((g.values[nb[c]] > 0) != (g.values[n] > 0)) {
-        band.push_back(n);
-        break;
-      }
-  }
+  const std::vector<std::size_t> band = scene::detail::crossingBand(g.values, g.dims);
   util::tbbFor(band.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
       const std::size_t n = band[i];
-      // Past a voxel and a half the crossing is a closed hole, not the soup.
-      // At most a voxel and a half; at least a trace, so a node on the soup keeps its side.
+      // At most a voxel and a half (past that the crossing closes a hole, away from the soup); at
+      // least a trace, so a node on the soup keeps its side.
       const double d = std::clamp(field.distance(nodePosition(g, n)), 1e-6 * h, 1.5 * h);
       g.values[n] = float(g.values[n] > 0 ? d : -d);
     }

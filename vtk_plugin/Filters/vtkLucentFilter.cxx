@@ -335,19 +335,17 @@ lucent::scene::EnvironmentLight readEnvironment(const std::string& path) {
                            " (fix the EXR)");
   if (!texels.note.empty())
     vtkGenericWarningMacro("EnvironmentFileName '" << path << "': " << texels.note);
-  auto env = lucent::scene::environmentFromImage(img.width, img.height, [&](int x, int y) {
-    return texels.radiance[std::size_t(y) * std::size_t(img.width) + std::size_t(x)];
-  });
+  auto env = lucent::scene::environmentFromTexels(img.width, img.height, texels);
   env.source = path;
   return env;
 }
 
-/// What the registry's default technique, when it is `chosen`, cannot take in `scene` (the first
-/// unmet requirement); empty when `chosen` is another technique or takes the scene.
-std::string defaultCannotTake(const lt::Technique* chosen, const lt::SceneDescription& scene) {
+/// What the registry's default technique, when it is `chosen`, cannot take in `scene` shaded at
+/// `whole` (the first unmet requirement); empty when `chosen` is another technique or takes it.
+std::string defaultCannotTake(const lt::Technique* chosen, const lt::SceneDescription& scene,
+                              const lt::ShadeRequest& whole) {
   if (chosen != &vtkLucentFilter::Techniques().defaultReference()) return "";
-  const auto missing =
-      lt::unmet(chosen->capabilities, lt::requirementsOf(scene, lt::vertexRequest(scene.mesh)));
+  const auto missing = lt::unmetBy(*chosen, scene, whole);
   return missing.empty() ? "" : missing.front();
 }
 
@@ -428,21 +426,20 @@ std::vector<std::string> vtkLucentFilter::PlanTechnique(Request& request,
 
 std::vector<std::string> vtkLucentFilter::HandOverDefault(Request& request,
                                                           const lt::SceneDescription& scene,
+                                                          const lt::ShadeRequest& whole,
                                                           const std::string& unmet) const {
   const std::string why = "the default technique cannot take " + unmet;
   request.technique = nullptr;
   try {
     this->ReadPlanInputs(request);  // no calibration: the fallback below
-    std::vector<std::string> plan =
-        this->PlanTechnique(request, scene, lt::vertexRequest(scene.mesh));
+    std::vector<std::string> plan = this->PlanTechnique(request, scene, whole);
     plan.insert(plan.begin(), why + "; the planner chose one that can");
     return plan;
   } catch (const lt::RequestError&) {
     // No calibrated technique takes it: the first offered that does, at its defaults.
-    const lt::Requirements needs = lt::requirementsOf(scene, lt::vertexRequest(scene.mesh));
     for (const lt::Technique* t : offered()) {
       const lt::KnobValues defaults = t->values();
-      if (!lt::unmet(t->capabilities, needs).empty() ||
+      if (!lt::unmetBy(*t, scene, whole).empty() ||
           (t->validity && !t->validity(scene, defaults).empty()))
         continue;
       request.technique = t, request.knobs = defaults;
@@ -571,12 +568,13 @@ int vtkLucentFilter::ShadeSurface(vtkDataObject* input, vtkPolyData* output,
     lt::SceneDescription& scene = this->SceneFor(input, surfaces.whole, request, medium);
     // Every rank plans from the whole surface, so all choose the same. The default technique hands
     // a scene it cannot take (a scan's heterogeneous medium) to the planner, as the CLI does.
-    const std::string unmet = defaultCannotTake(request.technique, scene);
+    const lt::ShadeRequest whole = lt::vertexRequest(scene.mesh);
+    const std::string unmet = defaultCannotTake(request.technique, scene, whole);
     std::vector<std::string> plan;
     if (!unmet.empty()) {
-      plan = this->HandOverDefault(request, scene, unmet);
+      plan = this->HandOverDefault(request, scene, whole, unmet);
     } else if (!request.technique) {
-      plan = this->PlanTechnique(request, scene, lt::vertexRequest(scene.mesh));
+      plan = this->PlanTechnique(request, scene, whole);
     }
     const lt::ShadeRequest shade = localRequest(scene.mesh, surfaces.wholeIndex);
     const lt::Rendered result = this->LastRun->prepared.render(

@@ -204,11 +204,12 @@ class LUCENTFILTERS_EXPORT vtkLucentFilter : public vtkPolyDataAlgorithm {
   Request CheckRequest() const;
   /// The filter's knobs of `technique`, checked against its description.
   lucent::technique::KnobValues KnobsOf(const lucent::technique::Technique& technique) const;
-  /// The default technique cannot take `scene` (`unmet` says why): the planner's choice into
-  /// `request`, or, when it has none, the first offered technique that takes the scene; the plan's
-  /// lines, the first saying why.
+  /// The default technique cannot take `scene` shaded at `whole` (`unmet` says why): the planner's
+  /// choice into `request`, or, when it has none, the first offered technique that takes the
+  /// scene; the plan's lines, the first saying why.
   std::vector<std::string> HandOverDefault(Request& request,
                                            const lucent::technique::SceneDescription& scene,
+                                           const lucent::technique::ShadeRequest& whole,
                                            const std::string& unmet) const;
   /// The planner's budget (BudgetMs, MaxError) and calibration into `request`.
   void ReadPlanInputs(Request& request) const;

@@ -101,4 +101,11 @@ EnvironmentLight environmentFromImage(int width, int height, PixelAt&& pixel) {
   return env;
 }
 
+/// The environment light of a probe's screened texels (environmentFromImage over them).
+inline EnvironmentLight environmentFromTexels(int width, int height, const ScreenedTexels& texels) {
+  return environmentFromImage(width, height, [&](int x, int y) {
+    return texels.radiance[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+  });
+}
+
 }  // namespace lucent::scene

@@ -34,6 +34,22 @@ inline int gridNeighbours(const glm::ivec3& dims, std::size_t n, std::size_t out
   if (k + 1 < std::size_t(dims.z)) out[count++] = n + nxy;
   return count;
 }
+
+/// The nodes of a `dims` grid (x fastest) with a neighbour on the other side of zero (> 0 is one
+/// side, <= 0 the other): the ends of the grid edges a contour at 0 crosses.
+inline std::vector<std::size_t> crossingBand(const std::vector<float>& d, const glm::ivec3& dims) {
+  std::vector<std::size_t> band;
+  std::size_t nb[6];
+  for (std::size_t n = 0; n < d.size(); ++n) {
+    const int count = gridNeighbours(dims, n, nb);
+    for (int c = 0; c < count; ++c)
+      if ((d[nb[c]] > 0) != (d[n] > 0)) {
+        band.push_back(n);
+        break;
+      }
+  }
+  return band;
+}
 }  // namespace detail
 
 /// Moves the offsets `d` (value minus threshold; > 0 is inside, <= 0 outside) of a `dims` grid, x
@@ -46,20 +62,12 @@ inline void keepOffThreshold(std::vector<float>& d, const glm::ivec3& dims,
                              double margin = kIsoVertexMargin) {
   // The smallest magnitude kept: a normal float, so t never divides zero by zero.
   const float floor = std::numeric_limits<float>::min() * 1024.0f;
-  std::vector<std::size_t> band;  // nodes with a neighbour across the threshold
-  std::size_t nb[6];
-  for (std::size_t n = 0; n < d.size(); ++n) {
-    const bool inside = d[n] > 0;
-    if (!inside && d[n] > -floor)
-      d[n] = -floor;  // 0 counts as outside, as the check for voxels does
-    if (inside && d[n] < floor) d[n] = floor;
-    const int count = detail::gridNeighbours(dims, n, nb);
-    for (int c = 0; c < count; ++c)
-      if ((d[nb[c]] > 0) != inside) {
-        band.push_back(n);
-        break;
-      }
+  for (float& v : d) {
+    if (v <= 0 && v > -floor) v = -floor;  // 0 counts as outside, as the check for voxels does
+    if (v > 0 && v < floor) v = floor;
   }
+  const std::vector<std::size_t> band = detail::crossingBand(d, dims);
+  std::size_t nb[6];
   const double ratio = margin / (1.0 - margin);
   for (int pass = 0; pass < 16; ++pass) {  // converges in 2-3 passes: raises shrink by `ratio`
     bool changed = false;

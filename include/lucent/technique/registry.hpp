@@ -21,6 +21,13 @@ struct Rendered {
   double seconds = 0;  ///< wall time of prepare + frame
 };
 
+/// Each requirement of `scene` shaded at `request` that `t` cannot take, as a phrase ("a
+/// heterogeneous medium (density field)"); empty when it takes them all.
+inline std::vector<std::string> unmetBy(const Technique& t, const SceneDescription& scene,
+                                        const ShadeRequest& request) {
+  return unmet(t.capabilities, requirementsOf(scene, request));
+}
+
 class Registry {
  public:
   /// Adds a technique; its name must be new, its default knobs valid, and its knob names unique
@@ -63,13 +70,12 @@ class Registry {
   /// Fails before any work when the technique cannot serve the scene and request, naming those that
   /// can.
   void check(const Technique& t, const SceneDescription& scene, const ShadeRequest& request) const {
-    const Requirements needs = requirementsOf(scene, request);
-    const auto missing = unmet(t.capabilities, needs);
+    const auto missing = unmetBy(t, scene, request);
     if (missing.empty()) return;
     std::string what;
     for (const auto& m : missing) what += (what.empty() ? "" : ", ") + m;
     const std::string able =
-        names([&](const Technique& o) { return unmet(o.capabilities, needs).empty(); });
+        names([&](const Technique& o) { return unmetBy(o, scene, request).empty(); });
     throw RequestError("technique '" + t.name + "' cannot take " + what +
                        "; techniques that can: " + (able.empty() ? "none" : able));
   }
