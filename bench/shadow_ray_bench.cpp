@@ -11,7 +11,9 @@
 #include <string>
 #include <vector>
 
-#include <lucent/technique/core_techniques.hpp>
+#include <lucent/technique/registry.hpp>
+
+#include "technique/core_registry.hpp"
 #include <lucent/technique/texture_space.hpp>
 
 #include "cli/args.hpp"
@@ -38,7 +40,7 @@ int main(int argc, char** argv) {
     if (runCount < 1 || runCount > 1000)
       throw std::invalid_argument("--runs " + args.get("runs") + ": give 1 to 1000 runs");
     const lucent::cli::Scene scene = lucent::cli::buildScene(args);
-    const lt::Registry registry = lt::coreRegistry();
+    const lt::Registry registry = lt::compiledCoreRegistry();
     const lt::KnobValues knobs = registry.get("tsis").values({});
     lt::Statistics stats;
     const auto surface = lt::detail::buildAtlas(scene, knobs, stats);

@@ -15,7 +15,9 @@
 #include <string>
 #include <vector>
 
-#include <lucent/technique/core_techniques.hpp>
+#include <lucent/technique/registry.hpp>
+
+#include "technique/core_registry.hpp"
 
 #include "cli/args.hpp"
 #include "cli/scene_setup.hpp"
@@ -132,7 +134,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     lucent::cli::Scene scene = lucent::cli::buildScene(args);
-    const lt::Registry registry = lt::coreRegistry();
+    const lt::Registry registry = lt::compiledCoreRegistry();
     std::vector<std::string> methods = args.all("method");
     if (methods.empty())
       for (const lt::Technique& t : registry.all())

@@ -5,6 +5,8 @@
 #include <iostream>
 #include <sstream>
 
+#include <lucent/technique/validity.hpp>
+
 #include "../util/error.hpp"
 
 namespace lucent::cli {
@@ -119,8 +121,8 @@ double Args::number(const std::string& name, double fallback, double lo, double 
   if (!has(name)) return fallback;
   const double v = parseNumber(get(name), "lucent " + mCommand + ": --" + name);
   if (v < lo || v > hi)
-    fail("--" + name + " " + get(name) + " is out of range; use a value in [" + std::to_string(lo) +
-         ", " + std::to_string(hi) + "]");
+    fail("--" + name + " " + get(name) + " is out of range; use a value in [" +
+         technique::valueText(lo) + ", " + technique::valueText(hi) + "]");
   return v;
 }
 

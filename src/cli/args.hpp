@@ -34,6 +34,8 @@ class Args {
   std::string get(const std::string& name, const std::string& fallback = "") const;
   std::vector<std::string> all(const std::string& name) const;
   const std::vector<std::string>& positional() const { return mPositional; }
+  /// Every option given, by name (without "--"), with its values.
+  const std::map<std::string, std::vector<std::string>>& given() const { return mValues; }
 
   double number(const std::string& name, double fallback, double lo, double hi) const;
   int integer(const std::string& name, int fallback, int lo, int hi) const;

@@ -133,11 +133,13 @@ int runBench(int argc, char** argv) {
   const std::vector<technique::KnobValues> baselineSettings =
       baselineMethod ? sweepSettings(*baselineMethod, {}, baselineSweeps)
                      : std::vector<technique::KnobValues>{};
-  for (const auto* list : {&settings, &baselineSettings})
-    for (const auto& k : *list) checkOutputKnobs(k);
-  checkOutputKnobs(refKnobs);
+  std::vector<technique::KnobValues> all = settings;
+  all.insert(all.end(), baselineSettings.begin(), baselineSettings.end());
+  all.push_back(refKnobs);
+  std::vector<NamedOutput> written = knobOutputs(all);
   for (const char* option : {"csv", "plot"})
-    if (args.has(option)) io::checkWritable(args.get(option));
+    if (args.has(option)) written.push_back({std::string("--") + option, args.get(option)});
+  checkOutputs(args, written);
 
   Scene scene = buildScene(args);
   const bool progress = !args.has("quiet");

@@ -12,6 +12,7 @@
 #include "../util/tbb_parallel.hpp"
 #include "commands.hpp"
 #include "material_options.hpp"
+#include "output_paths.hpp"
 
 namespace lucent::cli {
 
@@ -169,6 +170,7 @@ int runProfile(int argc, char** argv) {
           "|all] [--method profile|pathtrace] [--r R1,R2,... | --rmax X --n N] [--plot FILE.png]",
       specs);
   if (!args.parseOptionsOnly(argc, argv)) return 0;
+  if (args.has("plot")) checkOutputs(args, {{"--plot", args.get("plot")}});
   if (args.has("r") && (args.has("rmax") || args.has("n")))
     args.fail("give either --r or --rmax/--n, not both");
   const optics::Material m = materialFromArgs(args, "skin1");

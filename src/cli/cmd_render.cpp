@@ -74,8 +74,12 @@ std::pair<const technique::Technique*, technique::KnobValues> plannedTechnique(
                                          : "no --method, and the default cannot take the scene") +
                      ": no calibrated technique can serve this scene (lucent plan --explain says "
                      "why); name a --method that takes it (lucent techniques lists what each can)");
-  std::fprintf(stderr, "lucent render: auto: %s%s\n", plan::candidateLine(*p.choice).c_str(),
-               p.meetsBudget ? "" : " (the closest: no setting meets the budget)");
+  std::fprintf(stderr, "lucent render: auto: %s\n", plan::candidateLine(*p.choice).c_str());
+  if (!p.meetsBudget)
+    std::fprintf(stderr,
+                 "lucent render: warning: no calibrated setting meets the budget (%s); this is "
+                 "the closest. Give --hard-limit to refuse instead\n",
+                 plan::budgetText(budget).c_str());
   for (const auto& o : p.outsideCalibration)
     std::fprintf(stderr, "lucent render: warning: outside the planner's calibration data: %s\n",
                  o.c_str());
@@ -143,9 +147,10 @@ int runRender(int argc, char** argv) {
   technique::KnobValues knobs =
       automatic ? technique::KnobValues() : chosen->values(knobArgs(args, "knob"));
   // Every output is checked before any work: nothing is written unless everything can be.
-  for (const auto& o : outputs) io::checkWritable(o);
-  if (args.has("stats")) io::checkWritable(args.get("stats"));
-  checkOutputKnobs(knobs);
+  std::vector<NamedOutput> written = knobOutputs({knobs});
+  for (const auto& o : outputs) written.push_back({"--out", o});
+  if (args.has("stats")) written.push_back({"--stats", args.get("stats")});
+  checkOutputs(args, written);
 
   Scene scene = buildScene(args);
   // The plan reads the pixels the camera sees; the render takes the same ones.

@@ -157,7 +157,9 @@ class Runner {
   std::optional<Measured> run(const Job& job, const std::string& label,
                               std::vector<rp::PageNote>& notRun) {
     const std::string knobs = job.knobs.summary();
-    if (auto cached = mCache.load(job.technique->name, knobs)) return Measured{job, *cached, true};
+    if (auto cached = mCache.load(job.technique->name, knobs, mScene.camera.width,
+                                  mScene.camera.height))
+      return Measured{job, *cached, true};
     if (elapsed() > mOptions.budgetSeconds) {
       notRun.push_back({job.technique->name, job.knobs.summary(true),
                         "over the budget (--budget-s); run the same command again to resume"});

@@ -258,6 +258,9 @@ std::shared_ptr<const scene::VoxelGrid> readScan(const Args& args, Scene& s,
       throw InputError(e.what());
     }
   if (medium && medium->mask) {
+    if (args.has("iso"))
+      args.fail("--iso " + args.get("iso") + ": a label map's surface is where its labels with a "
+                "material end, not an isosurface; drop --iso (or give a points: transfer)");
     s.mesh = io::scanIsosurface(*medium->mask, 0.5,
                                 "--volume " + path + " (its labels with a material)");
     return scan;
@@ -267,7 +270,7 @@ std::shared_ptr<const scene::VoxelGrid> readScan(const Args& args, Scene& s,
     args.fail("--volume " + path +
               ": give --iso X, the value whose isosurface is the object's "
               "surface (the values span [" +
-              std::to_string(*lo) + ", " + std::to_string(*hi) + "])");
+              technique::valueText(*lo) + ", " + technique::valueText(*hi) + "])");
   }
   s.mesh = io::scanIsosurface(*scan, args.number("iso", 0, -1e30, 1e30), "--volume " + path);
   return scan;
@@ -412,6 +415,9 @@ Scene buildScene(const Args& args) {
   const int w = args.integer("width", 400, 1, 16384), h = args.integer("height", 400, 1, 16384);
   const glm::dvec3 view = args.triple("view", glm::dvec3(0, 0.6, 1));
   if (glm::length(view) <= 0) args.fail("--view must not be the zero vector");
+  if (!std::isfinite(glm::dot(view, view)))
+    args.fail("--view " + args.get("view") + ": the direction's length must be finite; give a "
+              "shorter vector (only its direction counts)");
   s.camera = scene::PinholeCamera::frame(s.mesh.bounds(), view, w, h);
   s.ownedCaster = std::make_unique<raycast::EmbreeRayCaster>(s.mesh);
   s.caster = s.ownedCaster.get();

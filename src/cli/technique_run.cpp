@@ -1,5 +1,6 @@
 #include "technique_run.hpp"
 
+#include <algorithm>
 #include <memory>
 #include <mutex>
 
@@ -78,17 +79,26 @@ std::vector<technique::KnobValues> sweepSettings(const technique::Technique& t,
   return settings;
 }
 
-void checkOutputKnobs(const technique::KnobValues& knobs) {
-  for (const auto& spec : knobs.specs())
-    if (spec.kind == technique::KnobKind::OutputFile && !knobs.text(spec.name).empty())
-      io::checkWritable(knobs.text(spec.name));
+std::vector<NamedOutput> knobOutputs(const std::vector<technique::KnobValues>& settings) {
+  std::vector<NamedOutput> out;
+  for (const auto& knobs : settings)
+    for (const auto& spec : knobs.specs()) {
+      const NamedOutput o{"--knob " + spec.name, knobs.text(spec.name)};
+      if (spec.kind != technique::KnobKind::OutputFile || o.path.empty()) continue;
+      if (std::none_of(out.begin(), out.end(), [&](const NamedOutput& k) { return k.path == o.path; }))
+        out.push_back(o);
+    }
+  return out;
 }
 
 ImageRun renderImage(const technique::Registry& registry, const technique::Technique& technique,
                      Scene& scene, const technique::KnobValues& knobs, bool progress,
                      const technique::ShadeRequest* pixels) {
   StageBars bars(progress);
-  scene.progress = [&bars](const std::string& stage, double f) { bars.update(stage, f); };
+  // --quiet: no callback at all, so techniques that draw their own stage bars (quadgraph) stay
+  // silent too.
+  if (progress)
+    scene.progress = [&bars](const std::string& stage, double f) { bars.update(stage, f); };
   struct Unhook {  // the callback must not outlive the bars, on any way out
     Scene& scene;
     ~Unhook() { scene.progress = {}; }

@@ -11,6 +11,7 @@
 #include <lucent/technique/registry.hpp>
 
 #include "args.hpp"
+#include "output_paths.hpp"
 #include "scene_setup.hpp"
 
 namespace lucent::cli {
@@ -36,9 +37,8 @@ std::vector<technique::KnobValues> sweepSettings(const technique::Technique& t,
                                                  const technique::KnobList& fixed,
                                                  const std::vector<technique::Sweep>& sweeps);
 
-/// The technique's output-file knobs that are set: each must be writable (checked now, before any
-/// work).
-void checkOutputKnobs(const technique::KnobValues& knobs);
+/// The technique's output-file knobs that are set, as outputs for checkOutputs (once per path).
+std::vector<NamedOutput> knobOutputs(const std::vector<technique::KnobValues>& settings);
 
 /// Prepare and one frame of `technique` on every pixel the camera sees (`pixels`: those already
 /// found, else found here), with progress bars unless quiet; output-file knobs get their extras

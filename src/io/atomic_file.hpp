@@ -1,7 +1,7 @@
 #pragma once
 /// @file atomic_file.hpp
 /// @brief Write to "<path>.tmp-<pid>", rename onto <path> on commit(); remove the temporary
-/// otherwise.
+/// otherwise, also when SIGINT or SIGTERM ends the process mid-write (pending_temp_files.hpp).
 #include <unistd.h>
 
 #include <filesystem>
@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "../util/error.hpp"
+#include "pending_temp_files.hpp"
 
 namespace lucent::io {
 
@@ -27,8 +28,10 @@ class AtomicFile {
   explicit AtomicFile(std::string path) : mPath(std::move(path)) {
     checkWritable(mPath);
     mTemp = mPath + ".tmp-" + std::to_string(::getpid());
+    mSlot = PendingTempFiles::add(mTemp);
   }
   ~AtomicFile() {
+    PendingTempFiles::remove(mSlot);
     if (!mCommitted) {
       std::error_code ec;
       std::filesystem::remove(mTemp, ec);
@@ -47,6 +50,7 @@ class AtomicFile {
 
  private:
   std::string mPath, mTemp;
+  int mSlot = -1;
   bool mCommitted = false;
 };
 

@@ -23,6 +23,7 @@
 
 #include "../util/error.hpp"
 #include "lucentScanSurface.h"
+#include "volume_headers/volume_headers.hpp"
 
 namespace lucent::io {
 
@@ -89,20 +90,27 @@ scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arr
   vtkNew<vtkNIFTIImageReader> nifti;
   vtkNew<vtkDICOMImageReader> dicom;
   double slope = 1, intercept = 0;  // NIfTI stores values to be rescaled
+  // Every format but .vti (whose XML VTK parses and checkDeclaredExtent bounds) has its header
+  // checked by lucent before VTK's reader allocates from it (volume_headers/).
   if (folder) {
+    declaredDicomSeries(path);
     dicom->SetDirectoryName(path.c_str());
     image = readWith(*dicom, path);
   } else if (endsWith(path, ".vti")) {
     image = readFile(*xml, path,
                      ": not a VTK XML image-data file; save the volume from ParaView as .vti");
   } else if (endsWith(path, ".vtk")) {
+    declaredLegacyVtk(path);
     legacy->SetFileName(path.c_str());
     image = readWith(*legacy, path);
   } else if (endsWith(path, ".nrrd") || endsWith(path, ".nhdr")) {
+    declaredNrrd(path);
     image = readFile(*nrrd, path, unreadable("NRRD"));
   } else if (endsWith(path, ".mha") || endsWith(path, ".mhd")) {
+    declaredMetaImage(path);
     image = readFile(*meta, path, unreadable("MetaImage"));
   } else if (endsWith(path, ".nii") || endsWith(path, ".nii.gz")) {
+    declaredNifti(path);
     image = readFile(*nifti, path, unreadable("NIfTI"));
     slope = nifti->GetRescaleSlope() != 0 ? nifti->GetRescaleSlope() : 1.0;
     intercept = nifti->GetRescaleIntercept();

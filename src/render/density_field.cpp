@@ -42,8 +42,10 @@ DensityField parseDensityField(const std::string& option, const std::string& spe
       periods = std::stod(spec.substr(6));
     } catch (const std::exception&) {
     }
-    if (!(periods > 0) || !std::isfinite(periods))
-      throw InputError(what + ": noise:F needs F > 0, e.g. noise:3");
+    constexpr double kMaxPeriods = 1000;  // finer than any technique's grid resolves
+    if (!(periods > 0 && periods <= kMaxPeriods))
+      throw InputError(what + ": noise:F needs 0 < F <= 1000 periods across the object, e.g. "
+                       "noise:3");
     const double k = 2 * optics::kPi * periods / bounds.diagonal();
     const glm::dvec3 lo = bounds.lo;
     field.at = [k, lo](const glm::dvec3& p) {

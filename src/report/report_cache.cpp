@@ -61,7 +61,8 @@ double numberField(const std::multimap<std::string, std::string>& f, const char*
 }  // namespace
 
 std::optional<SettingResult> ResultCache::load(const std::string& technique,
-                                               const std::string& knobs) const {
+                                               const std::string& knobs, int width,
+                                               int height) const {
   const std::string base = mFolder + "/" + stem(technique, knobs);
   std::ifstream in(base + ".txt");
   if (!in || !std::filesystem::exists(base + ".exr")) return std::nullopt;
@@ -83,11 +84,17 @@ std::optional<SettingResult> ResultCache::load(const std::string& technique,
   r.frameSeconds = numberField(f, "frame"), r.samples = numberField(f, "samples");
   r.sampleUnit = text("unit"), r.bytes = numberField(f, "bytes");
   for (auto [it, end] = f.equal_range("warning"); it != end; ++it) r.warnings.push_back(it->second);
+  if (!std::isfinite(r.seconds) || !(r.seconds >= 0)) return std::nullopt;
   try {
     r.image = io::readExr(base + ".exr");
   } catch (const std::exception&) {
     return std::nullopt;  // unreadable: measure again
   }
+  // Replaced, resized or damaged since it was stored: measure again.
+  if (r.image.width != width || r.image.height != height) return std::nullopt;
+  for (const auto& p : r.image.pixels)
+    if (!(std::isfinite(p.r) && std::isfinite(p.g) && std::isfinite(p.b) && std::isfinite(p.a)))
+      return std::nullopt;
   return r;
 }
 

@@ -34,7 +34,10 @@ class ResultCache {
   /// Results live in `folder` (created if missing), under `sceneKey`.
   ResultCache(std::string folder, std::string sceneKey);
   /// The cached result of this setting, if a complete one is there.
-  std::optional<SettingResult> load(const std::string& technique, const std::string& knobs) const;
+  /// The stored result of a setting, validated like any input: nullopt (measure again) unless its
+  /// image is `width` x `height` with finite pixels and its figures are finite.
+  std::optional<SettingResult> load(const std::string& technique, const std::string& knobs,
+                                    int width, int height) const;
   /// Stores atomically: a result is there whole or not at all.
   void store(const SettingResult& result) const;
   /// The file stem of a setting: short, unique per (scene, technique, knobs), safe in a URL.

@@ -1,13 +1,11 @@
-#include <lucent/technique/core_techniques.hpp>
-
+#include "core_registry.hpp"
 #include "techniques.hpp"
 
 namespace lucent::technique {
 
 Registry& appRegistry() {
   static Registry registry = [] {
-    Registry r;
-    addCoreTechniques(r);
+    Registry r = compiledCoreRegistry();
     r.add(prtTechnique());
 #ifdef LUCENT_HAVE_TETGEN
     r.add(quadgraphTechnique());

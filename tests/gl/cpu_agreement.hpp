@@ -7,7 +7,9 @@
 #include <vector>
 
 #include <lucent/optics/materials.hpp>
-#include <lucent/technique/core_techniques.hpp>
+#include <lucent/technique/registry.hpp>
+
+#include "technique/core_registry.hpp"
 
 #include "pass_scene.hpp"
 #include "raycast/embree_ray_caster.hpp"
@@ -82,7 +84,7 @@ inline Agreement compareWithCpu(const Frame& f, const lucent::scene::TriangleMes
     request.points.push_back(p);
     pixel.push_back(i);
   }
-  const lt::Registry registry = lt::coreRegistry();
+  const lt::Registry registry = lt::compiledCoreRegistry();
   const lt::Technique& t = registry.get(technique);
   const lt::Rendered cpu = registry.render(t, scene, t.values(knobs), request);
   Agreement a;

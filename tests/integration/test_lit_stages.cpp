@@ -9,7 +9,9 @@
 #include <string>
 
 #include <lucent/scene/shapes.hpp>
-#include <lucent/technique/core_techniques.hpp>
+#include <lucent/technique/registry.hpp>
+
+#include "technique/core_registry.hpp"
 
 #include "small_scene.hpp"
 #include "util/tbb_parallel.hpp"
@@ -51,7 +53,7 @@ TEST_CASE(
     "builds them again") {
   SmallScene s(lucent::scene::shapes::sphere(1.0, 4), 20, 24);
   lt::SceneDescription scene = describe(s, "skin1");
-  const lt::Registry registry = lt::coreRegistry();
+  const lt::Registry registry = lt::compiledCoreRegistry();
   lucent::scene::PinholeCamera turned = s.camera;
   turned.eye = glm::dvec3(-turned.eye.z, turned.eye.y, turned.eye.x);  // a quarter turn
   const lt::ShadeRequest first = lt::pixelRequest(s.camera, scene);

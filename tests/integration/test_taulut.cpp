@@ -10,7 +10,9 @@
 
 #include <lucent/optics/fresnel.hpp>
 #include <lucent/scene/shapes.hpp>
-#include <lucent/technique/core_techniques.hpp>
+#include <lucent/technique/registry.hpp>
+
+#include "technique/core_registry.hpp"
 
 #include "raycast/embree_ray_caster.hpp"
 #include "util/tbb_parallel.hpp"
@@ -63,7 +65,7 @@ lt::ShadeRequest at(const std::vector<glm::dvec3>& points) {
 /// B at the points, by taulut with the given knobs.
 std::vector<glm::dvec3> radiosity(const TestScene& s, const std::vector<glm::dvec3>& points,
                                   const lt::KnobList& knobs) {
-  const auto registry = lt::coreRegistry();
+  const auto registry = lt::compiledCoreRegistry();
   const lt::Technique& t = registry.get("taulut");
   return registry.render(t, s.scene, t.values(knobs), at(points)).frame.radiosity;
 }
@@ -168,7 +170,7 @@ TEST_CASE("taulut: a material edit in a frame equals a fresh prepare with the ne
   core.medium.material = grey(10);
   core.contains = [](const glm::dvec3& p) { return glm::length(p) < 0.5; };
   s.scene.inclusions.push_back(core);
-  const auto registry = lt::coreRegistry();
+  const auto registry = lt::compiledCoreRegistry();
   const lt::Technique& t = registry.get("taulut");
   const lt::KnobValues knobs = t.values({{"voxels", "20"}, {"map", "128"}});
   const lt::ShadeRequest request = at({{0, 0, 1}, {0.6, 0, 0.8}, {0, 0.98, 0.2}});
@@ -248,7 +250,7 @@ namespace {
 /// (a camera far above each point).
 std::vector<glm::dvec3> singleScattering(const TestScene& s, const std::vector<glm::dvec3>& points,
                                          const lt::KnobList& knobs) {
-  const auto registry = lt::coreRegistry();
+  const auto registry = lt::compiledCoreRegistry();
   const lt::Technique& t = registry.get("voxel-single");
   std::vector<glm::dvec3> out;
   for (const auto& p : points) {
@@ -317,7 +319,7 @@ TEST_CASE("voxel-single: a slab's single scattering in closed form, lit from beh
 TEST_CASE(
     "voxel-single against the path tracer's single scattering (eta 1): a back-lit cube with a "
     "cavity, thick (19 mean free paths) and thin") {
-  const auto registry = lt::coreRegistry();
+  const auto registry = lt::compiledCoreRegistry();
   for (double sigmaT : {0.2, 1.9}) {
     optics::Material m = grey(sigmaT);
     m.sigmaA = optics::Rgb<double>(0.5 * sigmaT), m.sigmaSPrime = optics::Rgb<double>(0.5 * sigmaT);
@@ -361,7 +363,7 @@ TEST_CASE(
   };
   field.scene.medium.maxSigmaT = glm::dvec3(m.sigmaA + m.sigmaSPrime);
   field.scene.medium.densityDescription = "halves as coefficients";
-  const auto registry = lt::coreRegistry();
+  const auto registry = lt::compiledCoreRegistry();
   const scene::PinholeCamera camera =
       scene::PinholeCamera::frame(dense.scene.mesh.bounds(), glm::dvec3(0, 0, 1), 16, 16);
   auto mean = [&](const TestScene& s, const char* name, const lt::KnobList& knobs) {

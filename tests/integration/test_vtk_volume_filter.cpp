@@ -174,7 +174,7 @@ TEST_CASE("vtkLucentVolumeFilter: bad input is an error naming the problem, an e
   });
   const std::pair<std::string, std::string> cases[] = {
       {"", "selects no voxel"},                                       // IsoValue 100
-      {"points:0/-1,0,0/1,1,1", "negative coefficient"},              //
+      {"points:0/-1,0,0/1,1,1", "gives a coefficient outside"},       //
       {"labels:0=none", "with no material"},                          // labels 1..12 present
       {"labels:0=none,1=marble,2=unobtainium", "is not a material"},  //
       {"bogus", "give labels:V=MATERIAL,... or points:V/SA/SS;..."}};

@@ -12,7 +12,9 @@
 #include <lucent/plan/explain.hpp>
 #include <lucent/plan/planner.hpp>
 #include <lucent/scene/shapes.hpp>
-#include <lucent/technique/core_techniques.hpp>
+#include <lucent/technique/registry.hpp>
+
+#include "technique/core_registry.hpp"
 
 namespace {
 namespace lp = lucent::plan;
@@ -67,7 +69,7 @@ lp::Calibration calibrationAt(const lp::SceneFeatures& f, double brdfError = 0.5
 }
 
 lp::Plan planOf(const TestScene& s, const lp::Calibration& c, const lp::Budget& b) {
-  static const lt::Registry registry = lt::coreRegistry();
+  static const lt::Registry registry = lt::compiledCoreRegistry();
   return lp::makePlan(registry, s.scene, s.request, s.features(), c, b);
 }
 

@@ -3,7 +3,9 @@
 // can.
 #include <doctest/doctest.h>
 
-#include <lucent/technique/core_techniques.hpp>
+#include <lucent/technique/registry.hpp>
+
+#include "technique/core_registry.hpp"
 
 using namespace lucent::technique;
 
@@ -66,8 +68,7 @@ TEST_CASE(
 TEST_CASE(
     "Every core technique: valid defaults, unique knob names, and a default sweep over its own "
     "knobs") {
-  Registry r;
-  addCoreTechniques(r);
+  const Registry r = compiledCoreRegistry();
   CHECK(r.all().size() == 9);
   for (const auto& t : r.all()) {
     INFO(t.name);

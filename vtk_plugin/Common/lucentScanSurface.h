@@ -25,6 +25,7 @@
 #include <lucent/scene/iso_margin.hpp>
 #include <lucent/scene/voxel_grid.hpp>
 #include <lucent/technique/knob.hpp>
+#include <lucent/technique/validity.hpp>
 
 namespace lucent::vtkadapter {
 
@@ -45,7 +46,8 @@ inline scene::VoxelGrid voxelGridOf(vtkImageData* image, vtkDataArray* array,
   for (int k = 0; k < 3; ++k)
     if (!(spacing[k] > 0))
       throw RequestError(what + ": the voxel spacing along axis " + std::to_string(k) + " is " +
-                         std::to_string(spacing[k]) + "; it must be positive (fix the header)");
+                         technique::numberText(spacing[k]) +
+                         "; it must be positive (fix the header)");
   const double voxels = double(dims[0]) * dims[1] * dims[2];
   if (!(voxels > 0) || voxels > scene::kMaxVoxels)
     throw RequestError(what + ": " + std::to_string(dims[0]) + " x " + std::to_string(dims[1]) +
@@ -70,11 +72,13 @@ inline scene::VoxelGrid voxelGridOf(vtkImageData* image, vtkDataArray* array,
       sum += array->GetComponent(i, c) * array->GetComponent(i, c);
     const double v =
         slope * (components == 1 ? array->GetComponent(i, 0) : std::sqrt(sum)) + intercept;
-    if (!std::isfinite(v))
-      throw RequestError(what + ": voxel " + std::to_string(i) + " of '" + name +
-                         "' is not finite; replace NaN/inf (e.g. ParaView's Calculator) before "
-                         "using it as a medium");
-    grid.values[std::size_t(i)] = float(v);  // VTK point ids run x fastest, as VoxelGrid's
+    const float stored = float(v);  // finite as a double is not enough: lucent keeps floats
+    if (!std::isfinite(stored))
+      throw RequestError(what + ": voxel " + std::to_string(i) + " of '" + name + "' is " +
+                         technique::numberText(v) +
+                         ", not a finite float; replace NaN/inf and values beyond 3.4e38 (e.g. "
+                         "ParaView's Calculator) before using it as a medium");
+    grid.values[std::size_t(i)] = stored;  // VTK point ids run x fastest, as VoxelGrid's
   }
   return grid;
 }
@@ -114,10 +118,10 @@ inline vtkSmartPointer<vtkPolyData> closedIsosurface(const scene::VoxelGrid& gri
   const auto [lo, hi] = std::minmax_element(grid.values.begin(), grid.values.end());
   if (grid.values.empty() || !(*hi > iso) || !(*lo <= iso))
     throw technique::RequestError(
-        what + ": the threshold " + std::to_string(iso) + " selects " +
+        what + ": the threshold " + technique::valueText(iso) + " selects " +
         (grid.values.empty() || !(*hi > iso) ? "no voxel" : "every voxel") + " (the values span [" +
-        (grid.values.empty() ? std::string("none") : std::to_string(*lo)) + ", " +
-        (grid.values.empty() ? std::string("none") : std::to_string(*hi)) + "]); " + fix);
+        (grid.values.empty() ? std::string("none") : technique::valueText(*lo)) + ", " +
+        (grid.values.empty() ? std::string("none") : technique::valueText(*hi)) + "]); " + fix);
   const int dims[3] = {grid.dims.x + 2, grid.dims.y + 2, grid.dims.z + 2};
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(dims);

@@ -38,6 +38,7 @@ struct SpacingChoice {
   double spacing = 0;
   double meanFreePath = 0;
   bool budgetLimited = false;  ///< true: the budget forced a spacing coarser than asked for
+  std::size_t count = 0;       ///< samples at that spacing (above the budget when triangles are)
 };
 
 inline SpacingChoice chooseSpacing(const scene::TriangleMesh& mesh, double minMeanFreePath,
@@ -60,6 +61,7 @@ inline SpacingChoice chooseSpacing(const scene::TriangleMesh& mesh, double minMe
     c.budgetLimited = true;
     count = countSurfaceSamples(mesh, c.spacing);
   }
+  c.count = count;
   return c;
 }
 

@@ -16,6 +16,7 @@
 #include "single_scattering_term.hpp"
 #include "technique.hpp"
 #include "validity.hpp"
+#include "validity.hpp"
 
 namespace lucent::technique {
 
@@ -88,6 +89,13 @@ class DipoleSum final : public Prepared {
                            std::to_string(asked) + " mm; use a fraction near 0.5");
       choice = reference::chooseSpacing(scene.mesh, mfp, knobs.real("fraction"),
                                         std::size_t(knobs.integer("max-samples")));
+      if (choice.count > std::size_t(knobs.integer("max-samples")))  // a sample per triangle
+        throw RequestError("technique '" + knobs.technique() + "': the mesh's " +
+                           std::to_string(scene.mesh.triangles.size()) +
+                           " triangles need a sample each, more than max-samples=" +
+                           knobs.text("max-samples") + "; raise max-samples (about " +
+                           numberText(double(choice.count) * kBytesPerSample / 1e9) +
+                           " GB) or decimate the mesh");
     }
     if (choice.budgetLimited)
       stats.warnings.push_back("sample budget reached: spacing " + std::to_string(choice.spacing) +

@@ -174,7 +174,7 @@ inline Technique taulutTechnique() {
       "Objects using Voxel Number Map (Eurographics posters), Eq. 1-4; the 21-tap filter of "
       "Dachsbacher, Stamminger 2003, Translucent Shadow Maps";
   t.knobs = {
-      KnobSpec::integer("voxels", 25, 2, 1024, "voxels along the object's longest side (cubic)",
+      KnobSpec::integer("voxels", 25, 2, 1024, detail::voxelsKnobHelp(),
                         Phase::Prepare),
       KnobSpec::choice("storage", {"lut", "march", "hierarchical"},
                        "path lengths between surface voxels: the full table, walked per query, or "

@@ -20,6 +20,15 @@ namespace lucent::technique::detail {
 /// (4) and nearest-surface map (4), 13 bytes each, 1.3 GB. Checked before allocating.
 inline constexpr double kMaxGridVoxels = 1e8;
 
+/// The voxel techniques' "voxels" knob help: the bound is on the whole grid, so the largest
+/// value that is taken depends on the object's shape.
+inline std::string voxelsKnobHelp() {
+  return "voxels along the object's longest side (cubic); the grid holds at most " +
+         std::to_string(int(kMaxGridVoxels / 1e6)) + " million voxels (about " +
+         std::to_string(int(std::cbrt(kMaxGridVoxels))) + " along each side of a cube-shaped "
+         "object, more along the longest side of a flat one)";
+}
+
 struct VoxelMedia {
   voxel::MediaGrid grid;
   /// With a coefficient field (a scan through a transfer function or a label map): the object's

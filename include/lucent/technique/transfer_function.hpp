@@ -26,6 +26,7 @@
 #include "../scene/voxel_grid.hpp"
 #include "knob.hpp"
 #include "scene.hpp"
+#include "validity.hpp"
 
 namespace lucent::technique {
 
@@ -68,6 +69,23 @@ inline glm::dvec3 triple(const std::string& text, const std::string& what) {
   return {number(parts[0], what), number(parts[1], what), number(parts[2], what)};
 }
 
+/// The largest label: scans hold float values, which are whole numbers exactly up to 2^24.
+inline constexpr double kMaxLabel = 16777216;
+/// Distinct labels a label map may hold (atlases have hundreds).
+inline constexpr std::size_t kMaxLabelsPresent = 65536;
+
+/// A label held by a voxel (rounded: resampled label maps hold fractions at their seams) or, with
+/// `whole`, as written in the spec: within +-kMaxLabel.
+inline long labelOf(double value, bool whole, const std::string& what, const std::string& where) {
+  if (!(std::fabs(value) <= kMaxLabel && (!whole || value == std::floor(value))))
+    throw RequestError(what + ": " + where + " " + numberText(value) + " is not a label (a " +
+                       (whole ? "whole " : "") + "number within +-" +
+                       std::to_string(long(kMaxLabel)) +
+                       "); give labels of a label map, or a points: transfer function for a scan "
+                       "of measurements");
+  return std::lround(value);
+}
+
 /// The nearest voxel's value: labels are categories, not interpolated.
 inline double nearestValue(const scene::VoxelGrid& g, const glm::dvec3& p) {
   const glm::ivec3 v =
@@ -82,7 +100,10 @@ inline ScanMedium labels(const std::string& what, const std::string& list,
     const auto eq = entry.find('=');
     if (eq == std::string::npos)
       throw RequestError(what + ": '" + entry + "' is not LABEL=MATERIAL (or LABEL=none)");
-    const long label = std::lround(number(entry.substr(0, eq), what));
+    const long label = labelOf(number(entry.substr(0, eq), what), true, what, "the label");
+    if (table.count(label))
+      throw RequestError(what + ": label " + std::to_string(label) +
+                         " is given twice; give each label one material");
     const std::string name = entry.substr(eq + 1);
     if (name == "none") {
       table[label] = std::nullopt;
@@ -95,7 +116,13 @@ inline ScanMedium labels(const std::string& what, const std::string& list,
     table[label] = *m;
   }
   std::set<long> present;
-  for (float v : scan->values) present.insert(std::lround(v));
+  for (float v : scan->values) {
+    present.insert(labelOf(v, false, what, "the scan holds the value"));
+    if (present.size() > kMaxLabelsPresent)
+      throw RequestError(what + ": the scan holds more than " + std::to_string(kMaxLabelsPresent) +
+                         " distinct values, so it is no label map; use a points: transfer "
+                         "function or --iso");
+  }
   std::string missing;
   for (long l : present)
     if (!table.count(l)) missing += (missing.empty() ? "" : ", ") + std::to_string(l);
@@ -143,9 +170,12 @@ inline ScanMedium points(const std::string& what, const std::string& list,
       throw RequestError(what + ": '" + entry + "' is not VALUE/SA_R,SA_G,SA_B/SS_R,SS_G,SS_B");
     Point p{number(parts[0], what), {triple(parts[1], what), triple(parts[2], what)}};
     for (int k = 0; k < 3; ++k)
-      if (!(p.c.sigmaA[k] >= 0 && p.c.sigmaSPrime[k] >= 0))
+      if (!(p.c.sigmaA[k] >= 0 && p.c.sigmaSPrime[k] >= 0 &&
+            p.c.sigmaA[k] + p.c.sigmaSPrime[k] <= optics::kMaxCoefficient))
         throw RequestError(what + ": the point at " + parts[0] +
-                           " gives a negative coefficient; sigma_a and sigma_s' must be >= 0");
+                           " gives a coefficient outside [0, " +
+                           numberText(optics::kMaxCoefficient) +
+                           "] mm^-1 (sigma_a and sigma_s' are >= 0, their sum at most that)");
     pts.push_back(p);
   }
   if (pts.empty()) throw RequestError(what + ": give at least one VALUE/SA/SS point");
@@ -192,8 +222,8 @@ void normalisedDensity(std::shared_ptr<const scene::VoxelGrid> scan, const ToSca
   };
   medium.densityDescription = name + " (" + std::to_string(scan->dims.x) + "x" +
                               std::to_string(scan->dims.y) + "x" + std::to_string(scan->dims.z) +
-                              " voxels, values over [" + std::to_string(low) + ", " +
-                              std::to_string(low + span) + "] normalised to [0, 1])";
+                              " voxels, values over [" + valueText(low) + ", " +
+                              valueText(low + span) + "] normalised to [0, 1])";
 }
 
 /// A transfer function's medium placed in the scene: `scanAt` maps scene positions to the scan's.

@@ -50,6 +50,12 @@ inline std::string numberText(double v) {
   return b;
 }
 inline std::string lengthText(double mm) { return numberText(mm) + " mm"; }
+/// A value the user gave or must give back (a threshold, a range's ends): 6 significant digits.
+inline std::string valueText(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.6g", v);
+  return b;
+}
 
 namespace validity {
 

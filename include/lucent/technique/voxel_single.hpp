@@ -90,7 +90,7 @@ inline Technique voxelSingleTechnique() {
       "the single-scattering term; sampled at N depths as Wang, Tran, Luebke 2005, over the voxel "
       "media of Mochida et al. 2016";
   t.knobs = {
-      KnobSpec::integer("voxels", 60, 2, 1024, "voxels along the object's longest side (cubic)",
+      KnobSpec::integer("voxels", 60, 2, 1024, detail::voxelsKnobHelp(),
                         Phase::Prepare),
       KnobSpec::integer("samples", 16, 1, 4096,
                         "optical depths N sampled along the view ray, per channel"),

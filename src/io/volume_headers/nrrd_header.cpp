@@ -1,0 +1,250 @@
+// The NRRD header (teem's format, http://teem.sourceforge.net/nrrd/format.html) as VTK's
+// vtkNrrdReader reads it: "field: description" lines up to a blank line, the values after it or
+// in one detached data file. VTK takes a fourth axis, or a first axis of 9 or fewer samples, for
+// the values' components, and indexes the sizes without checking their count (dimension 0, 1 or 5
+// crash it): lucent accepts what VTK reads right and names the rest.
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "../../util/error.hpp"
+#include "volume_headers.hpp"
+
+namespace lucent::io {
+
+namespace {
+constexpr const char* kNrrdFix = "re-save it as a 3-D scalar NRRD (unu), or convert it to .vti";
+
+/// Bytes per value of NRRD's type names (all the spellings the format allows); 0: unknown.
+double nrrdTypeBytes(const std::string& type) {
+  static const std::map<std::string, double> bytes = {{"signed char", 1},
+                                                      {"int8", 1},
+                                                      {"int8_t", 1},
+                                                      {"uchar", 1},
+                                                      {"unsigned char", 1},
+                                                      {"uint8", 1},
+                                                      {"uint8_t", 1},
+                                                      {"short", 2},
+                                                      {"short int", 2},
+                                                      {"signed short", 2},
+                                                      {"signed short int", 2},
+                                                      {"int16", 2},
+                                                      {"int16_t", 2},
+                                                      {"ushort", 2},
+                                                      {"unsigned short", 2},
+                                                      {"unsigned short int", 2},
+                                                      {"uint16", 2},
+                                                      {"uint16_t", 2},
+                                                      {"int", 4},
+                                                      {"signed int", 4},
+                                                      {"int32", 4},
+                                                      {"int32_t", 4},
+                                                      {"uint", 4},
+                                                      {"unsigned int", 4},
+                                                      {"uint32", 4},
+                                                      {"uint32_t", 4},
+                                                      {"longlong", 8},
+                                                      {"long long", 8},
+                                                      {"long long int", 8},
+                                                      {"signed long long", 8},
+                                                      {"signed long long int", 8},
+                                                      {"int64", 8},
+                                                      {"int64_t", 8},
+                                                      {"ulonglong", 8},
+                                                      {"unsigned long long", 8},
+                                                      {"unsigned long long int", 8},
+                                                      {"uint64", 8},
+                                                      {"uint64_t", 8},
+                                                      {"float", 4},
+                                                      {"double", 8}};
+  const auto it = bytes.find(type);
+  return it == bytes.end() ? 0 : it->second;
+}
+
+std::string trimmed(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+}
+
+std::vector<std::string> words(const std::string& s) {
+  std::istringstream in(s);
+  std::vector<std::string> out;
+  for (std::string w; in >> w;) out.push_back(w);
+  return out;
+}
+
+/// The header's fields, in order, and the byte where the values start (when attached).
+struct NrrdFields {
+  std::vector<std::pair<std::string, std::string>> fields;
+  double dataOffset = -1;  ///< -1: no blank line (a detached header)
+};
+
+NrrdFields readNrrdFields(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (!std::getline(in, line) || line.compare(0, 4, "NRRD") != 0)
+    throw InputError(path + ": not a NRRD file (its first line is not NRRD000X); " + kNrrdFix);
+  NrrdFields out;
+  constexpr std::size_t kMaxHeaderLines = 4096;  // real headers have tens
+  while (std::getline(in, line)) {
+    if (trimmed(line).empty()) {
+      out.dataOffset = double(in.tellg());
+      return out;
+    }
+    if (out.fields.size() > kMaxHeaderLines)
+      throw InputError(path + ": the header has more than 4096 lines; " + kNrrdFix);
+    if (line[0] == '#' || line.find(":=") != std::string::npos) continue;  // comment, key/value
+    const auto colon = line.find(": ");
+    if (colon == std::string::npos)
+      throw InputError(path + ": the header line '" + line.substr(0, 60) +
+                       "' is not 'field: description'; " + kNrrdFix);
+    out.fields.emplace_back(line.substr(0, colon), trimmed(line.substr(colon + 2)));
+  }
+  return out;
+}
+
+/// Spacings from "spacings" or the lengths of "space directions" vectors ("none": 0).
+std::vector<double> nrrdSpacings(const std::string& field, const std::string& text) {
+  std::vector<double> out;
+  if (field == "spacings") {
+    for (const std::string& w : words(text)) {
+      double v = 0;
+      out.push_back(parseNumber(w, v) ? v : (w == "nan" || w == "NaN" ? 0 : NAN));
+    }
+    return out;
+  }
+  for (const std::string& w : words(text)) {
+    if (w == "none") {
+      out.push_back(0);
+      continue;
+    }
+    std::string inner = w;
+    for (char& c : inner)
+      if (c == '(' || c == ')' || c == ',') c = ' ';
+    double sum = 0;
+    for (const std::string& n : words(inner)) {
+      double v = 0;
+      sum += parseNumber(n, v) ? v * v : NAN;
+    }
+    out.push_back(std::sqrt(sum));
+  }
+  return out;
+}
+}  // namespace
+
+namespace {
+/// The fields lucent needs, each checked as it is read.
+struct NrrdFacts {
+  double dimension = 0;
+  std::vector<double> sizes, spacings;
+  std::string encoding = "raw";
+  bool spaceBeforeSizes = false;  ///< VTK then keeps only three sizes
+};
+
+void readNrrdField(const std::string& path, const std::string& field, const std::string& text,
+                   NrrdFacts& f, DeclaredVolume& d) {
+  const std::string quoted = "'" + field + ": " + text.substr(0, 60) + "'";
+  if (field == "dimension" && !parseNumber(text, f.dimension))
+    throw InputError(path + ": " + quoted + " is not a number; " + kNrrdFix);
+  if (field == "sizes")
+    for (const std::string& w : words(text)) {
+      double v = 0;
+      f.sizes.push_back(parseNumber(w, v) ? v : NAN);
+    }
+  if (field == "spacings" || field == "space directions") f.spacings = nrrdSpacings(field, text);
+  if ((field == "space" || field == "space dimension") && f.sizes.empty())
+    f.spaceBeforeSizes = true;
+  if (field == "space" && text.find("time") != std::string::npos)
+    throw InputError(path + ": " + quoted + " is a time series; " + kNrrdFix);
+  if (field == "type" && (d.bytesPerValue = nrrdTypeBytes(text)) == 0)
+    throw InputError(path + ": " + quoted + " is not a number type VTK reads; " + kNrrdFix);
+  if (field == "encoding") {
+    f.encoding = text;
+    for (char& c : f.encoding) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (f.encoding == "gz") f.encoding = "gzip";
+    if (f.encoding == "txt" || f.encoding == "text") f.encoding = "ascii";
+    if (f.encoding != "raw" && f.encoding != "gzip" && f.encoding != "ascii")
+      throw InputError(path + ": " + quoted + " is not read by VTK (raw, gzip and ascii are); " +
+                       kNrrdFix);
+  }
+  if (field == "data file" || field == "datafile") {
+    const auto parts = words(text);
+    if (parts.size() != 1)
+      throw InputError(path + ": " + quoted +
+                       " splits the values over several files; lucent "
+                       "reads one data file: join them (unu join) or convert to .vti");
+    d.dataPath = besideHeader(path, parts[0]);
+  }
+  if ((field == "byte skip" || field == "byteskip" || field == "line skip" ||
+       field == "lineskip") &&
+      text != "0")
+    throw InputError(path + ": " + quoted + " is not read by VTK; " + kNrrdFix);
+  if (field == "endian" && text != "little" && text != "big")
+    throw InputError(path + ": " + quoted + " is neither little nor big; " + kNrrdFix);
+}
+
+/// Dims, components and spacing from the axes, as VTK's reader will take them.
+void nrrdAxes(const std::string& path, const NrrdFacts& f, DeclaredVolume& d) {
+  if (f.dimension != 3 && f.dimension != 4)
+    throw InputError(path + ": 'dimension: " + numberShown(f.dimension) +
+                     "'; lucent reads 3-D volumes (dimension 3, or 4 with the values' components "
+                     "first); " +
+                     kNrrdFix);
+  if (double(f.sizes.size()) != f.dimension)
+    throw InputError(path + ": 'sizes' gives " + std::to_string(f.sizes.size()) +
+                     " numbers for dimension " + numberShown(f.dimension) + "; " + kNrrdFix);
+  if (f.dimension == 4 && f.spaceBeforeSizes)
+    throw InputError(path +
+                     ": 'space' comes before 'sizes' in a 4-D header, and VTK's reader "
+                     "then drops the fourth size; put 'sizes' first, or convert to .vti");
+  const std::size_t first = f.dimension == 4 ? 1 : 0;
+  d.components = first ? f.sizes[0] : 1;
+  const std::size_t spacingFirst = f.spacings.size() == f.sizes.size() ? first : 0;
+  for (int a = 0; a < 3; ++a) {
+    d.dims[a] = f.sizes[first + a];
+    if (spacingFirst + a < f.spacings.size()) d.spacing[a] = f.spacings[spacingFirst + a];
+  }
+}
+
+/// How many values the data holds (counted up to the number needed).
+void countNrrdValues(const std::string& path, const NrrdFacts& f, double dataOffset,
+                     DeclaredVolume& d) {
+  const bool attached = d.dataPath == path;
+  if (attached && dataOffset < 0)
+    throw InputError(path +
+                     ": the header neither ends in a blank line before the values nor "
+                     "names a 'data file'; " +
+                     kNrrdFix);
+  const double offset = attached ? dataOffset : 0, needed = valuesNeeded(d);
+  if (f.encoding == "raw")
+    d.valuesPresent = std::floor((fileBytes(d.dataPath) - offset) / d.bytesPerValue);
+  else if (f.encoding == "gzip")
+    d.valuesPresent =
+        std::floor(inflatedBytes(d.dataPath, offset, needed * d.bytesPerValue) / d.bytesPerValue);
+  else
+    d.valuesPresent = textTokens(d.dataPath, offset, needed);
+}
+}  // namespace
+
+DeclaredVolume declaredNrrd(const std::string& path) {
+  const NrrdFields header = readNrrdFields(path);
+  DeclaredVolume d;
+  d.dataPath = path;
+  NrrdFacts facts;
+  for (const auto& [field, text] : header.fields) readNrrdField(path, field, text, facts, d);
+  if (d.bytesPerValue == 0) throw InputError(path + ": the header has no 'type'; " + kNrrdFix);
+  nrrdAxes(path, facts, d);
+  checkDeclaredVolume(path, d);  // sizes and bounds before counting values
+  if (facts.dimension == 3 && d.dims[0] <= 9)
+    throw InputError(path + ": the first axis has " + numberShown(d.dims[0]) +
+                     " samples, and VTK's reader takes 9 or fewer for the components of a 2-D "
+                     "image; give it at least 10 samples, or convert to .vti");
+  countNrrdValues(path, facts, header.dataOffset, d);
+  checkDeclaredVolume(path, d);
+  return d;
+}
+
+}  // namespace lucent::io

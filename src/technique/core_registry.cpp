@@ -1,0 +1,9 @@
+#include "core_registry.hpp"
+
+#include <lucent/technique/core_techniques.hpp>
+
+namespace lucent::technique {
+
+Registry compiledCoreRegistry() { return coreRegistry(); }
+
+}  // namespace lucent::technique

@@ -1,0 +1,276 @@
+// lucent's own checks of volume headers before VTK's readers (src/io/volume_headers/): the cases a
+// reliability probe found crashing VTK's readers (a signal), allocating without bound (exit 1) or
+// reading garbage (exit 0), each replayed through the CLI: exit 2 with one line naming the file,
+// the problem and a fix, nothing written. And sound files of every format still render.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "cli_run.hpp"
+#include "temp_dir.hpp"
+#include "volume_files.hpp"
+
+namespace {
+using lucent::test::contains;
+using lucent::test::lucentCli;
+using lucent::test::Run;
+using namespace lucent::test;
+
+/// One probe case: the files it writes into a folder, the volume argument, what the error names.
+struct ProbeCase {
+  const char* name;
+  std::function<std::string(const TempDir&)> write;  ///< returns the --volume argument
+  const char* expected;                              ///< a part of the one-line error
+};
+
+std::string nrrd(const TempDir& dir, const std::string& fields, const std::string& data) {
+  writeFile(dir / "v.nrrd", "NRRD0004\n" + fields + "\n" + data);
+  return dir / "v.nrrd";
+}
+
+std::string meta(const TempDir& dir, const std::string& keys, const std::string& data) {
+  writeFile(dir / "v.mha", keys + "ElementDataFile = LOCAL\n" + data);
+  return dir / "v.mha";
+}
+
+/// A DICOM folder of `n` slices of the 16^3 ball; `change(k, slice)` may spoil slice k.
+std::string dicom(const TempDir& dir, int n, const std::function<void(int, std::string&)>& change) {
+  std::filesystem::create_directories(dir / "series");
+  for (int k = 0; k < n; ++k) {
+    std::string s = dicomSlice(k, 16, 16, ballSlice(16, k));
+    change(k, s);
+    writeFile(dir / ("series/slice" + std::to_string(100 + k) + ".dcm"), s);
+  }
+  return dir / "series";
+}
+
+const std::string kBall = bytesOf(ballVoxels(16));
+const std::string kRaw = "type: ushort\nencoding: raw\nendian: little\n";
+const std::string kMeta = "ObjectType = Image\nElementType = MET_USHORT\n";
+
+const std::vector<ProbeCase> kProbeCases = {
+    {"NRRD dimension 0",
+     [](auto& d) { return nrrd(d, kRaw + "dimension: 0\nsizes: 16 16 16\n", kBall); },
+     "'dimension: 0'"},
+    {"NRRD dimension 1",
+     [](auto& d) { return nrrd(d, kRaw + "dimension: 1\nsizes: 4096\n", kBall); },
+     "'dimension: 1'"},
+    {"NRRD dimension 5",
+     [](auto& d) { return nrrd(d, kRaw + "dimension: 5\nsizes: 1 16 16 16 1\n", kBall); },
+     "'dimension: 5'"},
+    {"NRRD negative size",
+     [](auto& d) { return nrrd(d, kRaw + "dimension: 3\nsizes: -16 16 16\n", kBall); },
+     "declares -16 voxels along x"},
+    {"NRRD sizes of 1e20",
+     [](auto& d) { return nrrd(d, kRaw + "dimension: 3\nsizes: 1e20 16 16\n", kBall); },
+     "more than lucent reads"},
+    {"NRRD zero spacing",
+     [](auto& d) {
+       return nrrd(d, kRaw + "dimension: 3\nsizes: 16 16 16\nspacings: 0 1 1\n", kBall);
+     },
+     "spacing along x is 0"},
+    {"NRRD 500^3 floats in 16 KB",
+     [](auto& d) {
+       return nrrd(d, "type: float\nencoding: raw\ndimension: 3\nsizes: 500 500 500\n",
+                   std::string(16000, 'x'));
+     },
+     "of the 125000000 values"},
+    {"NRRD corrupt gzip",
+     [](auto& d) {
+       return nrrd(d, "type: ushort\nencoding: gzip\ndimension: 3\nsizes: 16 16 16\n",
+                   "\x1f\x8b\x08garbage-not-deflate");
+     },
+     "compressed data is corrupt"},
+    {"NRRD header only",
+     [](auto& d) {
+       writeFile(d / "v.nrrd", "NRRD0004\n" + kRaw + "dimension: 3\nsizes: 16 16 16");
+       return d / "v.nrrd";
+     },
+     "neither ends in a blank line"},
+    {"NRRD missing data file",
+     [](auto& d) {
+       return nrrd(d, kRaw + "dimension: 3\nsizes: 16 16 16\ndata file: gone.raw\n", "");
+     },
+     "gone.raw: cannot be read"},
+    {"NRRD unknown type",
+     [](auto& d) { return nrrd(d, "type: block\ndimension: 3\nsizes: 16 16 16\n", kBall); },
+     "'type: block'"},
+    {"MetaImage NDims 4",
+     [](auto& d) { return meta(d, kMeta + "NDims = 4\nDimSize = 16 16 16 1\n", kBall); },
+     "'NDims = 4'"},
+    {"MetaImage NDims 5",
+     [](auto& d) { return meta(d, kMeta + "NDims = 5\nDimSize = 16 16 16 1 1\n", kBall); },
+     "'NDims = 5'"},
+    {"MetaImage -3 channels",
+     [](auto& d) {
+       return meta(d, kMeta + "NDims = 3\nDimSize = 16 16 16\nElementNumberOfChannels = -3\n",
+                   kBall);
+     },
+     "-3 values per voxel"},
+    {"MetaImage 100000 channels",
+     [](auto& d) {
+       return meta(d,
+                   kMeta + "NDims = 3\nDimSize = 100 100 100\nElementNumberOfChannels = 100000\n",
+                   std::string(4000, 'x'));
+     },
+     "100000 values per voxel"},
+    {"MetaImage CompressedDataSize 99999999999",
+     [](auto& d) {
+       return meta(d,
+                   kMeta +
+                       "NDims = 3\nDimSize = 16 16 16\nCompressedData = True\nCompressedDataSize = "
+                       "99999999999\n",
+                   kBall);
+     },
+     "'CompressedDataSize = 99999999999'"},
+    {"MetaImage negative spacing",
+     [](auto& d) {
+       return meta(d, kMeta + "NDims = 3\nDimSize = 16 16 16\nElementSpacing = 1 -1 1\n", kBall);
+     },
+     "spacing along y is -1"},
+    {"MetaImage 500^3 floats in 16 KB",
+     [](auto& d) {
+       return meta(d, "ElementType = MET_FLOAT\nNDims = 3\nDimSize = 500 500 500\n",
+                   std::string(16000, 'x'));
+     },
+     "of the 125000000 values"},
+    {"MetaImage unparsable header",
+     [](auto& d) {
+       writeFile(d / "v.mha", "this is not a header\n");
+       return d / "v.mha";
+     },
+     "is not a MetaImage 'Key = Value' line"},
+    {"NIfTI unknown datatype",
+     [](auto& d) {
+       writeFile(d / "v.nii", niftiHeader(16, 16, 16, 4242, 16) + kBall);
+       return d / "v.nii";
+     },
+     "datatype 4242"},
+    {"NIfTI time series",
+     [](auto& d) {
+       writeFile(d / "v.nii", niftiHeader(16, 16, 16, 512, 16, 4, 3) + kBall);
+       return d / "v.nii";
+     },
+     "holds 3 volumes"},
+    {"NIfTI truncated",
+     [](auto& d) {
+       writeFile(d / "v.nii", niftiHeader(16, 16, 16) + kBall.substr(0, 100));
+       return d / "v.nii";
+     },
+     "of the 4096 values"},
+    {"NIfTI shorter than its header",
+     [](auto& d) {
+       writeFile(d / "v.nii.gz", gzipped("tiny"));
+       return d / "v.nii.gz";
+     },
+     "shorter than a NIfTI header"},
+    {"DICOM slices of two sizes",
+     [](auto& d) {
+       return dicom(d, 16, [](int k, std::string& s) {
+         if (k == 5) s = dicomSlice(k, 32, 32, std::string(2048, '\0'));
+       });
+     },
+     "is 32 x 32 pixels"},
+    {"DICOM Rows 65535",
+     [](auto& d) {
+       return dicom(d, 16, [](int k, std::string& s) {
+         if (k == 3) s = dicomSlice(k, 65535, 16, ballSlice(16, k));
+       });
+     },
+     "promises 65535 x 16 pixels"},
+    {"DICOM truncated slice",
+     [](auto& d) {
+       return dicom(d, 16, [](int k, std::string& s) {
+         if (k == 7) s.resize(s.size() - 300);
+       });
+     },
+     "is truncated"},
+    {"DICOM garbage slice",
+     [](auto& d) {
+       return dicom(d, 16, [](int k, std::string& s) {
+         if (k == 9) s = std::string(600, 'g');
+       });
+     },
+     "is not a DICOM file"},
+    {"DICOM compressed",
+     [](auto& d) {
+       return dicom(d, 4, [](int, std::string& s) {
+         const auto at = s.find("1.2.840.10008.1.2.1");
+         s.replace(at, 19, "1.2.840.10008.1.2.4");
+       });
+     },
+     "(compressed)"},
+};
+}  // namespace
+
+TEST_CASE(
+    "Broken volume headers (the reliability probe's cases) exit 2 naming the file, problem "
+    "and fix, with no VTK lines and nothing written") {
+  for (const ProbeCase& c : kProbeCases) {
+    TempDir dir;
+    const std::string volume = c.write(dir);
+    const Run r = lucentCli(
+        "render --volume " + volume + " --iso 50 --width 8 --height 8 --out " + dir / "o.png", dir);
+    INFO(std::string(c.name) << ": exit " << r.code << ", stderr: " << r.err);
+    CHECK(r.code == 2);
+    CHECK(contains(r.err, c.expected));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);  // one line, VTK's silenced
+    CHECK_FALSE(std::filesystem::exists(dir / "o.png"));
+  }
+}
+
+TEST_CASE(
+    "Sound volumes of every checked format render: NRRD raw, gzip and ascii, MetaImage "
+    "plain and compressed, NIfTI-1 plain and gzipped, a DICOM folder") {
+  const auto ascii = [] {
+    std::string text;
+    for (const auto v : ballVoxels(16)) text += std::to_string(v) + " ";
+    return text;
+  }();
+  const std::vector<std::pair<const char*, std::function<std::string(const TempDir&)>>> sound = {
+      {"NRRD raw",
+       [](auto& d) {
+         return nrrd(d, kRaw + "dimension: 3\nsizes: 16 16 16\nspacings: 1 1 1.5\n", kBall);
+       }},
+      {"NRRD gzip",
+       [](auto& d) {
+         return nrrd(
+             d, "type: ushort\nencoding: gzip\nendian: little\ndimension: 3\nsizes: 16 16 16\n",
+             gzipped(kBall));
+       }},
+      {"NRRD ascii",
+       [&](auto& d) {
+         return nrrd(d, "type: ushort\nencoding: ascii\ndimension: 3\nsizes: 16 16 16\n", ascii);
+       }},
+      {"MetaImage",
+       [](auto& d) {
+         return meta(d, kMeta + "NDims = 3\nDimSize = 16 16 16\nElementSpacing = 1 1 1\n", kBall);
+       }},
+      {"NIfTI-1",
+       [](auto& d) {
+         writeFile(d / "v.nii", niftiHeader(16, 16, 16) + kBall);
+         return d / "v.nii";
+       }},
+      {"NIfTI-1 gzipped",
+       [](auto& d) {
+         writeFile(d / "v.nii.gz", gzipped(niftiHeader(16, 16, 16) + kBall));
+         return d / "v.nii.gz";
+       }},
+      {"DICOM folder", [](auto& d) { return dicom(d, 16, [](int, std::string&) {}); }},
+  };
+  for (const auto& [name, write] : sound) {
+    TempDir dir;
+    const Run r = lucentCli(
+        "render --volume " + write(dir) +
+            " --iso 50 --method voxel-single --width 8 --height 8 --quiet --out " + dir / "o.png",
+        dir);
+    INFO(std::string(name) << ": exit " << r.code << ", stderr: " << r.err);
+    CHECK(r.code == 0);
+    CHECK(std::filesystem::exists(dir / "o.png"));
+  }
+}
