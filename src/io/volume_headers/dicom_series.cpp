@@ -133,6 +133,7 @@ class DicomWalker {
 
   void record(std::uint16_t group, std::uint16_t elem, const std::string& value,
               std::string* syntax) {
+    checkReadByVtk(group, elem, value.size());
     const auto number = [&](double& out) {
       if (value.size() == 2)
         out = u16(mPos);
@@ -156,6 +157,36 @@ class DicomWalker {
       else
         mSlice.spacing[0] = mSlice.spacing[1] = NAN;
     }
+  }
+
+  /// The tags VTK's DICOMAppHelper hands to its callbacks, which read the value without looking at
+  /// its length: an empty one is a null pointer there (found by fuzz_scan_dicom), a 1-byte
+  /// unsigned short a read past it.
+  void checkReadByVtk(std::uint16_t group, std::uint16_t elem, std::size_t length) const {
+    struct Tag {
+      std::uint16_t group, elem;
+      std::size_t minLength;
+      const char* name;
+    };
+    static constexpr Tag kRead[] = {{0x0002, 0x0010, 1, "Transfer Syntax UID"},
+                                    {0x0018, 0x0050, 1, "Slice Thickness"},
+                                    {0x0020, 0x000E, 1, "Series Instance UID"},
+                                    {0x0020, 0x0013, 1, "Instance Number"},
+                                    {0x0020, 0x0032, 1, "Image Position"},
+                                    {0x0020, 0x0037, 1, "Image Orientation"},
+                                    {0x0020, 0x1041, 1, "Slice Location"},
+                                    {0x0028, 0x0004, 1, "Photometric Interpretation"},
+                                    {0x0028, 0x0010, 2, "Rows"},
+                                    {0x0028, 0x0011, 2, "Columns"},
+                                    {0x0028, 0x0030, 1, "Pixel Spacing"},
+                                    {0x0028, 0x0100, 2, "Bits Allocated"},
+                                    {0x0028, 0x0103, 2, "Pixel Representation"},
+                                    {0x0028, 0x1052, 1, "Rescale Intercept"},
+                                    {0x0028, 0x1053, 1, "Rescale Slope"}};
+    for (const Tag& t : kRead)
+      if (t.group == group && t.elem == elem && length < t.minLength)
+        fail(std::string("has a ") + (length ? "cut " : "empty ") + t.name +
+             " tag, which VTK's DICOM reader cannot take (re-export the series)");
   }
 
   const std::string& mPath;
