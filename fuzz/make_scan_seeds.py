@@ -6,6 +6,7 @@ import gzip
 import math
 import os
 import struct
+import zlib
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 N = 10
@@ -71,8 +72,9 @@ def main():
     meta = b"ObjectType = Image\nNDims = %s\nDimSize = %s\nElementType = MET_USHORT\n%sElementDataFile = LOCAL\n"
     write("scan_mha", "ball.mha", meta % (b"3", b"10 10 10", b"") + raw)
     write("scan_mha", "ndims-4.mha", meta % (b"4", b"10 10 10 1", b"") + raw)
-    write("scan_mha", "compressed.mha", meta % (b"3", b"10 10 10", b"CompressedData = True\n") +
-          gzip.compress(raw))
+    packed = zlib.compress(raw)
+    write("scan_mha", "compressed.mha", meta % (b"3", b"10 10 10", b"CompressedData = True\n"
+                                                b"CompressedDataSize = %d\n" % len(packed)) + packed)
     write("scan_nii", "ball.nii", nifti() + raw)
     write("scan_nii", "datatype-4242.nii", nifti(4242) + raw)
     write("scan_nii_gz", "ball.nii.gz", gzip.compress(nifti() + raw))

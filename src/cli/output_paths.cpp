@@ -20,6 +20,13 @@ std::string identity(const std::string& path) {
   return ec ? path : canonical.string();
 }
 
+/// Whether `a` and `b` are one file: one path however spelled, or hard links to one inode.
+bool sameFile(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  if (identity(a) == identity(b)) return true;
+  return fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec);
+}
+
 /// The existing regular files an option's value names, whole or in parts.
 std::vector<std::string> filesNamedBy(const std::string& value) {
   std::vector<std::string> parts{value};
@@ -65,7 +72,7 @@ void checkOutputs(const Args& args, const std::vector<NamedOutput>& outputs) {
     for (const std::string& value : values)
       for (const std::string& file : filesNamedBy(value))
         for (const NamedOutput& o : outputs)
-          if (identity(o.path) == identity(file))
+          if (sameFile(o.path, file))
             throw InputError(prefix + o.option + " " + o.path + " is the input --" + name + " " +
                              value + "; writing it would replace the input: give another name");
   }

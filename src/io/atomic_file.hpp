@@ -31,11 +31,12 @@ class AtomicFile {
     mSlot = PendingTempFiles::add(mTemp);
   }
   ~AtomicFile() {
-    PendingTempFiles::remove(mSlot);
     if (!mCommitted) {
       std::error_code ec;
       std::filesystem::remove(mTemp, ec);
     }
+    PendingTempFiles::remove(
+        mSlot);  // after the file is gone: a signal in between still removes it
   }
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
@@ -44,7 +45,9 @@ class AtomicFile {
   void commit() {
     std::error_code ec;
     std::filesystem::rename(mTemp, mPath, ec);
-    if (ec) throw InputError("cannot write '" + mPath + "': " + ec.message());
+    if (ec)
+      throw InputError("cannot write '" + mPath + "': " + ec.message() +
+                       "; check free space and permissions, or choose another folder");
     mCommitted = true;
   }
 

@@ -4,6 +4,7 @@
 /// the signal ends the process: an interrupted write of a large image leaves nothing behind.
 /// The handler only calls unlink, signal and raise (async-signal-safe) on fixed storage.
 #include <atomic>
+#include <cerrno>
 #include <cstring>
 #include <string>
 
@@ -43,10 +44,11 @@ class PendingTempFiles {
       struct sigaction current {};
       sigaction(kSignals[k], nullptr, &current);
       if ((current.sa_flags & SA_SIGINFO) && current.sa_sigaction == &onSignal) continue;
+      if (!(current.sa_flags & SA_SIGINFO) && current.sa_handler == SIG_IGN) continue;  // nohup
       previous()[k] = current;
       struct sigaction action {};
       action.sa_sigaction = &onSignal;
-      action.sa_flags = SA_SIGINFO;
+      action.sa_flags = SA_SIGINFO | SA_RESTART;  // a chained handler may return: writes go on
       sigemptyset(&action.sa_mask);
       sigaction(kSignals[k], &action, nullptr);
     }
@@ -70,8 +72,10 @@ class PendingTempFiles {
   }
 
   static void onSignal(int sig, siginfo_t* info, void* context) {
+    const int savedErrno = errno;
     for (int i = 0; i < kSlots; ++i)
       if (slots()[i].ready.load()) ::unlink(slots()[i].path);
+    errno = savedErrno;
     const struct sigaction& before = previous()[sig == SIGINT ? 0 : 1];
     if (before.sa_flags & SA_SIGINFO) return before.sa_sigaction(sig, info, context);
     if (before.sa_handler == SIG_IGN) return;

@@ -19,9 +19,13 @@ inline void checkVoxelCount(const std::string& subject, const double dims[3],
   char bound[64];
   std::snprintf(bound, sizeof bound, "%g, %g GB", scene::kMaxVoxels,
                 scene::kMaxVoxels * sizeof(float) / 1e9);
-  throw InputError(subject + std::to_string(long(dims[0])) + " x " + std::to_string(long(dims[1])) +
-                   " x " + std::to_string(long(dims[2])) + " voxels, more than lucent " + verb +
-                   " (" + bound + "); " + fix);
+  const auto shown = [](double v) {  // a hostile header's size exceeds long: no cast
+    char b[32];
+    std::snprintf(b, sizeof b, v < 1e15 ? "%.0f" : "%.6g", v);
+    return std::string(b);
+  };
+  throw InputError(subject + shown(dims[0]) + " x " + shown(dims[1]) + " x " + shown(dims[2]) +
+                   " voxels, more than lucent " + verb + " (" + bound + "); " + fix);
 }
 
 }  // namespace lucent::io

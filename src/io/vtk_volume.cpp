@@ -3,10 +3,14 @@
 #include "quiet_vtk.hpp"
 #include "voxel_bound.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include <vtkAlgorithm.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
 #include <vtkDICOMImageReader.h>
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
@@ -37,7 +41,10 @@ constexpr const char* kResampleFix =
 
 /// Voxels named by a reader's header, before the data is read: an input-sized allocation is bounded
 /// (scene::kMaxVoxels) from the extent the file declares, not from what VTK has already allocated.
-void checkDeclaredExtent(vtkAlgorithm& reader, const std::string& path) {
+/// With `declared` (lucent's own reading of the header), VTK's reading must agree with it: where
+/// they differ, VTK would misread the values.
+void checkDeclaredExtent(vtkAlgorithm& reader, const std::string& path,
+                         const DeclaredVolume* declared) {
   reader.UpdateInformation();
   int extent[6] = {0, -1, 0, -1, 0, -1};
   vtkInformation* info = reader.GetOutputInformation(0);
@@ -49,24 +56,59 @@ void checkDeclaredExtent(vtkAlgorithm& reader, const std::string& path) {
   if (!(dims[0] > 0 && dims[1] > 0 && dims[2] > 0))
     throw InputError(path + ": the header's extent is empty; check the file in ParaView");
   checkVoxelCount(path + ": the header declares ", dims, "reads", kResampleFix);
+  if (declared && (dims[0] != declared->dims[0] || dims[1] != declared->dims[1] ||
+                   dims[2] != declared->dims[2]))
+    throw InputError(path + ": VTK's reader takes it for " + numberShown(dims[0]) + " x " +
+                     numberShown(dims[1]) + " x " + numberShown(dims[2]) +
+                     " voxels, its header declares " + numberShown(declared->dims[0]) + " x " +
+                     numberShown(declared->dims[1]) + " x " + numberShown(declared->dims[2]) +
+                     "; convert it to .vti (ParaView: File > Save Data)");
 }
+
+/// The first error a VTK algorithm reported while it ran (empty: none).
+class ErrorCatcher {
+ public:
+  explicit ErrorCatcher(vtkAlgorithm& algorithm) {
+    mCommand->SetClientData(&mMessage);
+    mCommand->SetCallback([](vtkObject*, unsigned long, void* sink, void* text) {
+      auto& message = *static_cast<std::string*>(sink);
+      if (message.empty() && text) message = static_cast<const char*>(text);
+    });
+    algorithm.AddObserver(vtkCommand::ErrorEvent, mCommand);
+  }
+  const std::string& message() const { return mMessage; }
+
+ private:
+  std::string mMessage;
+  vtkNew<vtkCallbackCommand> mCommand;
+};
 }  // namespace
 
 /// Reads through `reader` after bounding its header's extent; the reader must outlive the image.
+/// A reader that reports an error has left its output unfilled: that is refused.
 template <class Reader>
-vtkImageData* readWith(Reader& reader, const std::string& path) {
+vtkImageData* readWith(Reader& reader, const std::string& path,
+                       const DeclaredVolume* declared = nullptr) {
   const QuietVtk quiet;
-  checkDeclaredExtent(reader, path);
+  const ErrorCatcher errors(reader);
+  checkDeclaredExtent(reader, path, declared);
   reader.Update();
+  if (!errors.message().empty() || reader.GetErrorCode() != 0) {
+    std::string why = errors.message().substr(0, 160);
+    std::replace(why.begin(), why.end(), '\n', ' ');
+    throw InputError(path + ": VTK's reader failed" + (why.empty() ? "" : " (" + why + ")") +
+                     "; the file is damaged or of a kind VTK misreads: re-export the scan");
+  }
   return reader.GetOutput();
 }
 
 /// Reads a file after checking the reader takes it; else InputError with the path and `refusal`.
 template <class Reader>
-vtkImageData* readFile(Reader& reader, const std::string& path, const std::string& refusal) {
+vtkImageData* readFile(Reader& reader, const std::string& path, const std::string& refusal,
+                       const DeclaredVolume* declared = nullptr) {
   if (!reader.CanReadFile(path.c_str())) throw InputError(path + refusal);
   reader.SetFileName(path.c_str());
-  return readWith(reader, path);
+  return readWith(reader, path, declared);
 }
 
 std::string unreadable(const char* format) {
@@ -93,27 +135,31 @@ scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arr
   // Every format but .vti (whose XML VTK parses and checkDeclaredExtent bounds) has its header
   // checked by lucent before VTK's reader allocates from it (volume_headers/).
   if (folder) {
-    declaredDicomSeries(path);
+    const DeclaredVolume declared = declaredDicomSeries(path);
+    for (const std::string& note : declared.notes)
+      std::fprintf(stderr, "lucent: note: %s\n", note.c_str());
     dicom->SetDirectoryName(path.c_str());
-    image = readWith(*dicom, path);
+    image = readWith(*dicom, path, &declared);
   } else if (endsWith(path, ".vti")) {
     image = readFile(*xml, path,
                      ": not a VTK XML image-data file; save the volume from ParaView as .vti");
   } else if (endsWith(path, ".vtk")) {
-    declaredLegacyVtk(path);
+    const DeclaredVolume declared = declaredLegacyVtk(path);
     legacy->SetFileName(path.c_str());
-    image = readWith(*legacy, path);
+    image = readWith(*legacy, path, &declared);
   } else if (endsWith(path, ".nrrd") || endsWith(path, ".nhdr")) {
-    declaredNrrd(path);
-    image = readFile(*nrrd, path, unreadable("NRRD"));
+    const DeclaredVolume declared = declaredNrrd(path);
+    image = readFile(*nrrd, path, unreadable("NRRD"), &declared);
   } else if (endsWith(path, ".mha") || endsWith(path, ".mhd")) {
-    declaredMetaImage(path);
-    image = readFile(*meta, path, unreadable("MetaImage"));
+    const DeclaredVolume declared = declaredMetaImage(path);
+    image = readFile(*meta, path, unreadable("MetaImage"), &declared);
   } else if (endsWith(path, ".nii") || endsWith(path, ".nii.gz")) {
-    declaredNifti(path);
-    image = readFile(*nifti, path, unreadable("NIfTI"));
-    slope = nifti->GetRescaleSlope() != 0 ? nifti->GetRescaleSlope() : 1.0;
-    intercept = nifti->GetRescaleIntercept();
+    const DeclaredVolume declared = declaredNifti(path);
+    image = readFile(*nifti, path, unreadable("NIfTI"), &declared);
+    if (nifti->GetRescaleSlope() != 0) {  // NIfTI-1: scl_slope 0 means no scaling at all
+      slope = nifti->GetRescaleSlope();
+      intercept = nifti->GetRescaleIntercept();
+    }
   } else {
     throw InputError(path + ": unknown volume format; give " + kFormats);
   }

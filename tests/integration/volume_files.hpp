@@ -46,6 +46,16 @@ inline std::string gzipped(const std::string& raw) {
   return out;
 }
 
+/// zlib (not gzip) of `raw`, as MetaImage's CompressedData holds it.
+inline std::string zlibbed(const std::string& raw) {
+  uLongf size = compressBound(uLong(raw.size()));
+  std::string out(size, '\0');
+  compress2(reinterpret_cast<Bytef*>(out.data()), &size, reinterpret_cast<const Bytef*>(raw.data()),
+            uLong(raw.size()), 6);
+  out.resize(size);
+  return out;
+}
+
 inline void writeFile(const std::string& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
 }

@@ -55,7 +55,7 @@ void checkDeclaredVolume(const std::string& path, const DeclaredVolume& d) {
     if (!(std::isfinite(d.spacing[a]) && d.spacing[a] > 0))
       throw InputError(path + ": the voxel spacing along " + kAxis[a] + " is " +
                        shown(d.spacing[a]) + "; spacing must be finite and positive: " + fix);
-  if (d.valuesPresent >= 0 && d.valuesPresent < valuesNeeded(d))
+  if (d.valuesPresent != kUnknown && d.valuesPresent < valuesNeeded(d))
     throw InputError(d.dataPath + ": holds " + shown(d.valuesPresent) + " of the " +
                      shown(valuesNeeded(d)) + " values the header of " + path +
                      " declares; the file is truncated or its header wrong: re-export the scan");
@@ -71,17 +71,43 @@ bool parseNumber(const std::string& text, double& value) {
   return *end == '\0' && std::isfinite(value);
 }
 
+bool headerLine(std::istream& in, std::string& line, const std::string& path,
+                std::size_t maxBytes) {
+  line.clear();
+  for (int c; (c = in.get()) != EOF;) {
+    if (c == '\n') return true;
+    if (line.size() == maxBytes)
+      throw InputError(path + ": a header line is longer than " + numberShown(double(maxBytes)) +
+                       " bytes: not a volume header; " + kReexportFix);
+    line += char(c);
+  }
+  return !line.empty();
+}
+
 double fileBytes(const std::string& path) {
   std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))  // not a device or FIFO: reads must end
+    throw InputError(
+        path + ": " +
+        (std::filesystem::exists(path, ec) ? "is not a regular file" : "no such file") +
+        "; give the volume's data as a file");
   const auto n = std::filesystem::file_size(path, ec);
-  if (ec) throw InputError(path + ": cannot be read (" + ec.message() + "); give an existing file");
+  if (ec) throw InputError(path + ": cannot be read (" + ec.message() + "); give a readable file");
   return double(n);
+}
+
+double valuesIn(double bytes, double bytesPerValue) {
+  return std::floor(std::max(0.0, bytes) / bytesPerValue);
 }
 
 namespace {
 using GzFile = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
 
 GzFile openAt(const std::string& path, double offset) {
+  if (!(offset >= 0 && offset <= fileBytes(path)))  // also keeps long(offset) defined
+    throw InputError(
+        path + ": its data would start at byte " + numberShown(offset) +
+        ", past the end of the file; the file is truncated or its header wrong: " + kReexportFix);
   GzFile f(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!f) throw InputError(path + ": cannot be opened; give a readable file");
   if (offset > 0 && std::fseek(f.get(), long(offset), SEEK_SET) != 0)
@@ -89,50 +115,67 @@ GzFile openAt(const std::string& path, double offset) {
   return f;
 }
 
-/// Streams the inflated bytes to `sink(bytes, n)` until the stream ends, `limit` bytes were
-/// produced or `sink` returns false.
+[[noreturn]] void corrupt(const std::string& path, const z_stream& z) {
+  throw InputError(path + ": its compressed data is corrupt (zlib: " +
+                   (z.msg ? z.msg : "not a " + std::string("stream of this kind")) +
+                   "); re-export the scan");
+}
+
+/// Streams the inflated bytes to `sink(bytes, n)` until the data ends (gzip: every member, as
+/// gzread reads them), `limit` bytes were produced, `inputLimit` compressed bytes were read, or
+/// `sink` returns false.
 template <class Sink>
-double inflateFrom(const std::string& path, double offset, double limit, Sink sink) {
+double inflateFrom(const std::string& path, double offset, double limit, Compression kind,
+                   double inputLimit, Sink sink) {
   GzFile f = openAt(path, offset);
   z_stream z{};
-  if (inflateInit2(&z, 15 + 32) != Z_OK)  // 15 + 32: zlib or gzip, by the stream's own header
-    throw InputError(path + ": cannot start zlib");
+  if (inflateInit2(&z, kind == Compression::Gzip ? 15 + 16 : 15) != Z_OK)
+    throw InputError(path + ": zlib could not start (out of memory?); try again");
   std::vector<unsigned char> in(1 << 16), out(1 << 16);
-  double produced = 0;
+  double produced = 0, consumed = 0;
   int rc = Z_OK;
-  while (rc != Z_STREAM_END && produced < limit) {
-    z.avail_in = unsigned(std::fread(in.data(), 1, in.size(), f.get()));
-    if (z.avail_in == 0) break;  // the stream is cut short: fewer bytes than declared
+  while (produced < limit && consumed < inputLimit) {
+    const auto want = std::size_t(std::min(double(in.size()), inputLimit - consumed));
+    z.avail_in = unsigned(std::fread(in.data(), 1, want, f.get()));
+    if (z.avail_in == 0) break;  // the data is cut short: fewer bytes than declared
+    consumed += z.avail_in;
     z.next_in = in.data();
-    while (z.avail_in > 0 && rc != Z_STREAM_END && produced < limit) {
+    while (z.avail_in > 0 && produced < limit) {
+      if (rc == Z_STREAM_END) {  // another gzip member follows (bgzip, concatenated files)
+        if (kind != Compression::Gzip) break;
+        inflateReset(&z);
+      }
       z.avail_out = unsigned(out.size()), z.next_out = out.data();
       rc = inflate(&z, Z_NO_FLUSH);
       if (rc != Z_OK && rc != Z_STREAM_END && rc != Z_BUF_ERROR) {
-        const std::string why = z.msg ? z.msg : "corrupt data";
+        const z_stream copy = z;
         inflateEnd(&z);
-        throw InputError(path + ": its compressed data is corrupt (zlib: " + why +
-                         "); re-export the scan");
+        corrupt(path, copy);
       }
       const std::size_t n = out.size() - z.avail_out;
       produced += double(n);
       if (!sink(out.data(), n)) return inflateEnd(&z), produced;
     }
+    if (rc == Z_STREAM_END && kind != Compression::Gzip) break;
   }
   inflateEnd(&z);
   return produced;
 }
 }  // namespace
 
-double inflatedBytes(const std::string& path, double offset, double limit) {
-  return inflateFrom(path, offset, limit, [](const unsigned char*, std::size_t) { return true; });
+double inflatedBytes(const std::string& path, double offset, double limit, Compression kind,
+                     double inputLimit) {
+  return inflateFrom(path, offset, limit, kind, inputLimit,
+                     [](const unsigned char*, std::size_t) { return true; });
 }
 
 std::string inflatedPrefix(const std::string& path, std::size_t count) {
   std::string text;
-  inflateFrom(path, 0, double(count), [&](const unsigned char* b, std::size_t n) {
-    text.append(reinterpret_cast<const char*>(b), std::min(n, count - text.size()));
-    return text.size() < count;
-  });
+  inflateFrom(path, 0, double(count), Compression::Gzip, fileBytes(path),
+              [&](const unsigned char* b, std::size_t n) {
+                text.append(reinterpret_cast<const char*>(b), std::min(n, count - text.size()));
+                return text.size() < count;
+              });
   return text;
 }
 

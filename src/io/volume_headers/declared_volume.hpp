@@ -5,7 +5,9 @@
 /// spacing, values present). VTK's image readers trust their headers: a negative size, a fourth
 /// dimension or a slice shorter than its Rows tag crashes them or reads uninitialised memory.
 #include <array>
+#include <istream>
 #include <string>
+#include <vector>
 
 namespace lucent::io {
 
@@ -23,8 +25,12 @@ struct DeclaredVolume {
   double bytesPerValue = 0;                ///< of the stored type
   std::array<double, 3> spacing{1, 1, 1};  ///< voxel size along x, y, z
   std::string dataPath;                    ///< the file holding the values (may be the header's)
-  double valuesPresent = -1;  ///< values the data holds (up to the count needed); -1: unknown
+  double valuesPresent = -1;       ///< values the data holds (counted up to those needed); kUnknown
+  std::vector<std::string> notes;  ///< what was accepted with a remark (a skipped file)
 };
+
+/// DeclaredVolume::valuesPresent when the data cannot be counted before reading.
+inline constexpr double kUnknown = -1;
 
 /// The values `declared` needs: dims x components.
 double valuesNeeded(const DeclaredVolume& declared);
@@ -45,12 +51,24 @@ std::string numberShown(double v);
 /// Parses `text` as a finite number (the whole token); false when it is not one.
 bool parseNumber(const std::string& text, double& value);
 
+/// Reads one line of at most `maxBytes` into `line` (without its newline); false at the end of
+/// the stream; InputError naming `path` when the line is longer (a header is never that long).
+bool headerLine(std::istream& in, std::string& line, const std::string& path,
+                std::size_t maxBytes = 65536);
+
 /// Bytes in the file at `path`; InputError naming `path` when it cannot be read.
 double fileBytes(const std::string& path);
 
-/// Bytes a zlib or gzip stream starting `offset` bytes into `path` inflates to, counting at most
-/// `limit` (reading stops there); InputError naming the file when the stream is corrupt.
-double inflatedBytes(const std::string& path, double offset, double limit);
+/// Whole values in `bytes` (0 for a negative count: data that starts past the end).
+double valuesIn(double bytes, double bytesPerValue);
+
+enum class Compression { Gzip, Zlib };
+
+/// Bytes the compressed data starting `offset` bytes into `path` inflates to (gzip: all members;
+/// zlib: one stream, of at most `inputLimit` compressed bytes), counting at most `limit`;
+/// InputError naming the file when the data is corrupt or of another kind.
+double inflatedBytes(const std::string& path, double offset, double limit, Compression kind,
+                     double inputLimit);
 
 /// The first `count` inflated bytes of the gzip file `path` (fewer when it is shorter).
 std::string inflatedPrefix(const std::string& path, std::size_t count);

@@ -23,6 +23,12 @@ constexpr std::size_t kMaxSlices = 100000;
 struct DicomSlice {
   double rows = -1, columns = -1, bitsAllocated = -1, samples = 1, frames = 1;
   double pixelBytes = -1, pixelBytesPresent = -1;
+  double slope = 1, intercept = 0;  ///< Rescale Slope and Intercept
+  /// VTK's reader makes float output when the rescale is not whole (RescaledImageDataIsFloat), and
+  /// decides that from the last slice: every slice must agree.
+  bool floatRescale() const {
+    return slope != std::trunc(slope) || intercept != std::trunc(intercept);
+  }
   double spacing[2] = {1, 1};
 };
 
@@ -32,15 +38,23 @@ class DicomWalker {
   DicomWalker(const std::string& path, const std::string& bytes, double fileSize)
       : mPath(path), mBytes(bytes), mFileSize(fileSize) {}
 
+  /// As VTK's DICOMParser::IsDICOMFile decides: "DICM" at byte 0 or 128, or a first group of
+  /// 0002 or 0008. VTK's reader skips other files in the folder.
+  static bool looksLikeDicom(const std::string& bytes) {
+    if (bytes.compare(0, 4, "DICM") == 0) return true;
+    if (bytes.size() >= 132 && bytes.compare(128, 4, "DICM") == 0) return true;
+    if (bytes.size() < 8) return false;
+    const unsigned group = unsigned((unsigned char)bytes[1]) << 8 | (unsigned char)bytes[0];
+    return group == 0x0002 || group == 0x0008;
+  }
+
   DicomSlice walk() {
-    const bool preamble = mBytes.size() >= 132 && mBytes.compare(128, 4, "DICM") == 0;
-    mPos = preamble ? 132 : 0;
-    if (!preamble && !(mBytes.size() >= 8 && (u16(0) == 0x0002 || u16(0) == 0x0008)))
-      fail(
-          "is not a DICOM file (no DICM preamble, no DICOM group first); move it out of the "
-          "folder");
-    mExplicit = preamble;  // the meta group (0002) is explicit VR little endian
-    std::string syntax = preamble ? "" : "1.2.840.10008.1.2";
+    const bool at128 = mBytes.size() >= 132 && mBytes.compare(128, 4, "DICM") == 0;
+    const bool at0 = mBytes.compare(0, 4, "DICM") == 0;
+    mPos = at128 ? 132 : (at0 ? 4 : 0);
+    // The meta group (0002) is explicit VR little endian, also in a file without the preamble.
+    mExplicit = mPos + 8 <= mBytes.size() && u16(mPos) == 0x0002;
+    std::string syntax = mExplicit ? "" : "1.2.840.10008.1.2";
     while (mPos + 8 <= mBytes.size() && u16(mPos) == 0x0002) element(0, &syntax);
     setSyntax(syntax);
     while (!mDone && mPos + 8 <= mBytes.size()) element(0, nullptr);
@@ -79,7 +93,7 @@ class DicomWalker {
 
   /// One element at mPos: its header, then its value (recorded, skipped or walked into).
   void element(int depth, std::string* syntax) {
-    if (depth > 16) fail("nests sequences more than 16 deep");
+    if (depth > kMaxDepth) fail("nests sequences more than 16 deep");
     const std::uint16_t group = u16(mPos), elem = u16(mPos + 2);
     std::size_t header = 8;
     std::uint32_t length = 0;
@@ -95,6 +109,7 @@ class DicomWalker {
       length = u32(mPos + 4);
     }
     mPos += header;
+    checkReadByVtk(group, elem, length == 0xFFFFFFFF ? 0 : length);
     if (group == 0x7FE0 && elem == 0x0010) return pixelData(length);
     if (length == 0xFFFFFFFF) return undefinedLength(depth);
     if (mPos + length > mBytes.size()) fail("is truncated inside its tags (re-export the series)");
@@ -104,6 +119,7 @@ class DicomWalker {
 
   /// A sequence or item of undefined length: elements up to its delimiter (FFFE,E00D / E0DD).
   void undefinedLength(int depth) {
+    if (depth > kMaxDepth) fail("nests sequences more than 16 deep");
     while (mPos + 8 <= mBytes.size()) {
       const std::uint16_t group = u16(mPos), elem = u16(mPos + 2);
       if (group == 0xFFFE && (elem == 0xE00D || elem == 0xE0DD)) {
@@ -126,14 +142,14 @@ class DicomWalker {
       fail(
           "holds encapsulated (compressed) pixel data, which VTK's DICOM reader does not read; "
           "decompress it (gdcmconv --raw, dcmdjpeg)");
-    mSlice.pixelBytes = length;
+    mSlice.pixelBytes = length;  // VTK reads it into an int: 2^31 and above is negative there
+    if (double(length) >= 2147483647.0) fail("declares 2 GB or more of pixel data in one slice");
     mSlice.pixelBytesPresent = mFileSize - double(mPos);
     mDone = true;
   }
 
   void record(std::uint16_t group, std::uint16_t elem, const std::string& value,
               std::string* syntax) {
-    checkReadByVtk(group, elem, value.size());
     const auto number = [&](double& out) {
       if (value.size() == 2)
         out = u16(mPos);
@@ -148,6 +164,11 @@ class DicomWalker {
     if (elem == 0x0002) number(mSlice.samples);
     if (elem == 0x0008 && !parseNumber(value.substr(0, value.find('\0')), mSlice.frames))
       mSlice.frames = 1;
+    if (elem == 0x1052 || elem == 0x1053) {  // Rescale Intercept, Slope: VTK casts them to int
+      double v = NAN;
+      const bool ok = parseNumber(value.substr(0, value.find('\0')), v) && std::fabs(v) < 2e9;
+      (elem == 0x1053 ? mSlice.slope : mSlice.intercept) = ok ? v : NAN;
+    }
     if (elem == 0x0030) {  // Pixel Spacing "row\column"
       const auto slash = value.find('\\');
       double r = 0, c = 0;
@@ -182,13 +203,15 @@ class DicomWalker {
                                     {0x0028, 0x0100, 2, "Bits Allocated"},
                                     {0x0028, 0x0103, 2, "Pixel Representation"},
                                     {0x0028, 0x1052, 1, "Rescale Intercept"},
-                                    {0x0028, 0x1053, 1, "Rescale Slope"}};
+                                    {0x0028, 0x1053, 1, "Rescale Slope"},
+                                    {0x0018, 0x1120, 4, "Gantry Tilt"}};
     for (const Tag& t : kRead)
       if (t.group == group && t.elem == elem && length < t.minLength)
-        fail(std::string("has a ") + (length ? "cut " : "empty ") + t.name +
+        fail(std::string("has ") + (length ? "a cut " : "an empty ") + t.name +
              " tag, which VTK's DICOM reader cannot take (re-export the series)");
   }
 
+  static constexpr int kMaxDepth = 16;
   const std::string& mPath;
   const std::string& mBytes;
   double mFileSize;
@@ -221,6 +244,9 @@ void checkSlice(const std::string& path, const DicomSlice& s) {
     throw InputError(path + ": " + why + "; " + kDicomFix);
   };
   if (!(s.rows >= 1 && s.columns >= 1)) fail("has no Rows or Columns tag, or one of 0");
+  if (!(s.spacing[0] > 0 && s.spacing[1] > 0))
+    fail("has a Pixel Spacing of " + numberShown(s.spacing[1]) + "\\" + numberShown(s.spacing[0]) +
+         " (two positive numbers are needed)");
   if (s.bitsAllocated != 8 && s.bitsAllocated != 16)
     fail("has BitsAllocated " + numberShown(s.bitsAllocated) +
          " (VTK's DICOM reader reads 8 or 16)");
@@ -235,37 +261,61 @@ void checkSlice(const std::string& path, const DicomSlice& s) {
     fail("promises " + numberShown(s.rows) + " x " + numberShown(s.columns) + " pixels (" +
          numberShown(needed) + " bytes) but its pixel data is " + numberShown(s.pixelBytes) +
          " bytes long");
+  if (!std::isfinite(s.slope) || !std::isfinite(s.intercept))
+    fail("has a Rescale Slope or Intercept that is not a number within +-2e9");
+  if (s.pixelBytes > s.pixelBytesPresent)
+    fail("is truncated: its pixel data is " + numberShown(s.pixelBytes) +
+         " bytes, the file holds " + numberShown(std::max(0.0, s.pixelBytesPresent)));
   if (s.pixelBytesPresent < needed)
     fail("is truncated: its pixel data needs " + numberShown(needed) + " bytes, the file holds " +
          numberShown(std::max(0.0, s.pixelBytesPresent)));
 }
 }  // namespace
 
-DeclaredVolume declaredDicomSeries(const std::string& folder) {
+namespace {
+/// The folder's files VTK's reader takes as slices, sorted; `skipped` names the others.
+std::vector<std::string> sliceFiles(const std::string& folder, std::vector<std::string>& skipped) {
   std::vector<std::string> files;
-  for (const auto& entry : std::filesystem::directory_iterator(folder))
-    if (entry.is_regular_file()) {
-      if (files.size() == kMaxSlices)
-        throw InputError(folder + ": holds more than 100000 files; " + kDicomFix);
-      files.push_back(entry.path().string());
-    }
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (!entry.is_regular_file()) continue;
+    if (files.size() + skipped.size() == kMaxSlices)
+      throw InputError(folder + ": holds more than 100000 files; " + kDicomFix);
+    std::ifstream in(entry.path(), std::ios::binary);
+    std::string head(132, '\0');
+    in.read(head.data(), 132);
+    head.resize(std::size_t(in.gcount()));
+    (DicomWalker::looksLikeDicom(head) ? files : skipped).push_back(entry.path().string());
+  }
   std::sort(files.begin(), files.end());
   if (files.size() < 2)
-    throw InputError(folder + ": holds " + std::to_string(files.size()) +
-                     " file(s); a DICOM volume is a folder of at least 2 slices: " + kDicomFix);
+    throw InputError(
+        folder + ": holds " + std::to_string(files.size()) +
+        " DICOM file(s); a DICOM volume is a folder of at least 2 slices: " + kDicomFix);
+  return files;
+}
+}  // namespace
+
+DeclaredVolume declaredDicomSeries(const std::string& folder) {
   DeclaredVolume d;
   d.dataPath = folder;
-  DicomSlice first;
+  std::vector<std::string> skipped;
+  const std::vector<std::string> files = sliceFiles(folder, skipped);
+  for (const std::string& file : skipped)
+    d.notes.push_back(file + " is not a DICOM file; VTK's reader skips it, and so does lucent");
+  const DicomSlice first = readSlice(files.front());
   for (const std::string& file : files) {
-    const DicomSlice s = readSlice(file);
+    const DicomSlice s = file == files.front() ? first : readSlice(file);
     checkSlice(file, s);
-    if (file == files.front()) first = s;
     if (s.rows != first.rows || s.columns != first.columns ||
         s.bitsAllocated != first.bitsAllocated)
       throw InputError(file + ": is " + numberShown(s.columns) + " x " + numberShown(s.rows) +
                        " pixels of " + numberShown(s.bitsAllocated) + " bits, " + files.front() +
                        " is " + numberShown(first.columns) + " x " + numberShown(first.rows) +
                        " of " + numberShown(first.bitsAllocated) + "; " + kDicomFix);
+    if (s.floatRescale() != first.floatRescale())
+      throw InputError(file + ": its Rescale Slope/Intercept is " +
+                       (s.floatRescale() ? "fractional" : "whole") + ", that of " + files.front() +
+                       " is not, and VTK's reader sizes the volume from one of them; " + kDicomFix);
   }
   d.dims = {first.columns, first.rows, double(files.size())};
   d.bytesPerValue = first.bitsAllocated / 8;

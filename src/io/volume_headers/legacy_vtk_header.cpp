@@ -49,14 +49,14 @@ void three(const std::vector<std::string>& w, std::array<double, 3>& out) {
 DeclaredVolume declaredLegacyVtk(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::string version, title, encoding, line;
-  std::getline(in, version), std::getline(in, title), std::getline(in, encoding);
+  headerLine(in, version, path), headerLine(in, title, path), headerLine(in, encoding, path);
   if (version.compare(0, 5, "# vtk") != 0)
     throw InputError(path + ": not a legacy VTK file (no '# vtk DataFile' first line); " + kVtkFix);
   const bool binary = upper(words(encoding).empty() ? "" : words(encoding)[0]) == "BINARY";
   DeclaredVolume d;
   d.dataPath = path;
   double points = -1;
-  for (int n = 0; std::getline(in, line) && n < 256; ++n) {
+  for (int n = 0; headerLine(in, line, path) && n < 256; ++n) {
     const auto w = words(line);
     if (w.empty()) continue;
     const std::string key = upper(w[0]);
@@ -66,11 +66,17 @@ DeclaredVolume declaredLegacyVtk(const std::string& path) {
     if (key == "DIMENSIONS") three(w, d.dims);
     if (key == "SPACING" || key == "ASPECT_RATIO") three(w, d.spacing);
     if (key == "POINT_DATA" && (w.size() < 2 || !parseNumber(w[1], points))) points = NAN;
-    if (key != "SCALARS" && key != "VECTORS") continue;
+    if (key == "CELL_DATA" && points == -1) {  // cell arrays first (vtkStructuredPointsWriter's
+      d.valuesPresent = kUnknown;              // order): their values are not lines to read
+      d.components = 1, d.bytesPerValue = 8;
+      checkDeclaredVolume(path, d);
+      return d;
+    }
+    if ((key != "SCALARS" && key != "VECTORS") || points == -1) continue;
     d.components = key == "VECTORS" ? 3 : 1;
     if (key == "SCALARS" && w.size() > 3 && !parseNumber(w[3], d.components)) d.components = NAN;
     d.bytesPerValue = w.size() > 2 ? legacyTypeBytes(w[2]) : 0;
-    if (key == "SCALARS" && !std::getline(in, line)) break;  // its LOOKUP_TABLE line
+    if (key == "SCALARS" && !headerLine(in, line, path)) break;  // its LOOKUP_TABLE line
     const bool sized = d.bytesPerValue > 0;
     if (!sized) d.bytesPerValue = 8;  // bit, long, vtkIdType: bound as 8 bytes, not counted
     checkDeclaredVolume(path, d);

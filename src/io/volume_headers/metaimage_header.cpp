@@ -17,16 +17,16 @@ namespace lucent::io {
 namespace {
 constexpr const char* kMetaFix = "re-save it as a 3-D MetaImage (NDims = 3) or convert it to .vti";
 
-/// Bytes per value of MetaIO's element types (an _ARRAY suffix names the same type); 0: other.
-double metaTypeBytes(std::string type) {
+/// Bytes per value of the element types VTK 9.1's MetaImage reader maps to a VTK type of the same
+/// size (MET_LONG is 4 bytes in MetaIO but VTK_LONG 8; 64-bit and float arrays VTK refuses after
+/// sizing the output to one voxel); 0: other.
+double metaTypeBytes(const std::string& type) {
   static const std::map<std::string, double> bytes = {
-      {"MET_CHAR", 1},      {"MET_UCHAR", 1},      {"MET_SHORT", 2}, {"MET_USHORT", 2},
-      {"MET_INT", 4},       {"MET_UINT", 4},       {"MET_LONG", 4},  {"MET_ULONG", 4},
-      {"MET_LONG_LONG", 8}, {"MET_ULONG_LONG", 8}, {"MET_FLOAT", 4}, {"MET_DOUBLE", 8}};
-  const std::string suffix = "_ARRAY";
-  if (type.size() > suffix.size() &&
-      type.compare(type.size() - suffix.size(), suffix.size(), suffix) == 0)
-    type.resize(type.size() - suffix.size());
+      {"MET_CHAR", 1},        {"MET_UCHAR", 1},       {"MET_SHORT", 2},
+      {"MET_USHORT", 2},      {"MET_INT", 4},         {"MET_UINT", 4},
+      {"MET_FLOAT", 4},       {"MET_DOUBLE", 8},      {"MET_CHAR_ARRAY", 1},
+      {"MET_UCHAR_ARRAY", 1}, {"MET_SHORT_ARRAY", 2}, {"MET_USHORT_ARRAY", 2},
+      {"MET_INT_ARRAY", 4},   {"MET_UINT_ARRAY", 4}};
   const auto it = bytes.find(type);
   return it == bytes.end() ? 0 : it->second;
 }
@@ -48,7 +48,10 @@ std::vector<double> numbers(const std::string& text) {
   return out;
 }
 
-bool isTrue(const std::string& v) { return v == "True" || v == "true" || v == "1"; }
+/// As MetaIO reads a boolean: by its first character.
+bool isTrue(const std::string& v) {
+  return !v.empty() && (v[0] == 'T' || v[0] == 't' || v[0] == '1');
+}
 
 /// The header's keys and the byte after the ElementDataFile line.
 struct MetaFields {
@@ -60,15 +63,24 @@ MetaFields readMetaFields(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   MetaFields out;
   std::string line;
-  constexpr int kMaxHeaderLines = 4096;  // real headers have about twenty
-  for (int n = 0; std::getline(in, line); ++n) {
-    const auto eq = line.find('=');
-    if (n > kMaxHeaderLines || eq == std::string::npos)
+  constexpr int kMaxHeaderLines = 4096;   // real headers have about twenty short lines
+  constexpr std::size_t kMaxLine = 1024;  // VTK's CanReadFile reads the first key into 8000 bytes
+  for (int n = 0; headerLine(in, line, path); ++n) {
+    if (trimmed(line).empty() && n < kMaxHeaderLines) continue;
+    auto sep = line.find('=');
+    if (sep == std::string::npos) sep = line.find(':');
+    const std::string key = sep == std::string::npos ? "" : trimmed(line.substr(0, sep));
+    if (n > kMaxHeaderLines || line.size() > kMaxLine || key.empty() ||
+        key.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_") !=
+            std::string::npos)
       throw InputError(path + ": '" + trimmed(line).substr(0, 60) +
                        "' is not a MetaImage 'Key = Value' line before ElementDataFile; " +
                        kMetaFix);
-    const std::string key = trimmed(line.substr(0, eq));
-    out.keys[key] = trimmed(line.substr(eq + 1));
+    if (!out.keys.emplace(key, trimmed(line.substr(sep + 1))).second)
+      throw InputError(path + ": the key " + key +
+                       " is given twice (MetaIO would apply both, in "
+                       "order); " +
+                       kMetaFix);
     if (key == "ElementDataFile") {
       out.dataOffset = double(in.tellg());
       return out;
@@ -103,39 +115,59 @@ void metaAxes(const std::string& path, const MetaFields& f, DeclaredVolume& d) {
                      "' is not a number type VTK reads (MET_UCHAR ... MET_DOUBLE); " + kMetaFix);
 }
 
+/// The compressed bytes MetaIO will inflate: CompressedDataSize (needed for LOCAL data, where
+/// MetaIO otherwise inflates the header), bounded by what the file holds.
+double compressedBytes(const std::string& path, const MetaFields& f, bool local, double available) {
+  double declared = available;
+  const bool given = f.keys.count("CompressedDataSize") > 0;
+  if (given && !(parseNumber(key(f, "CompressedDataSize", ""), declared) && declared >= 1 &&
+                 declared == std::floor(declared) && declared <= available))
+    throw InputError(path + ": 'CompressedDataSize = " + key(f, "CompressedDataSize", "") +
+                     "' but the file holds " + numberShown(std::max(0.0, available)) +
+                     " bytes of values; the file is truncated or its header wrong: " + kMetaFix);
+  if (!given && local)
+    throw InputError(path +
+                     ": compressed LOCAL data needs CompressedDataSize (MetaIO would "
+                     "inflate the header); " +
+                     kMetaFix);
+  if (declared > kMaxVolumeBytes)
+    throw InputError(path + ": " + numberShown(declared) +
+                     " compressed bytes, more than lucent "
+                     "reads; resample the volume");
+  return declared;
+}
+
 void countMetaValues(const std::string& path, const MetaFields& f, DeclaredVolume& d) {
   const std::string file = key(f, "ElementDataFile", "");
   const bool local = file == "LOCAL" || file == "Local" || file == "local";
-  if (!local && (file.find(' ') != std::string::npos || file == "LIST" ||
-                 file.find('%') != std::string::npos))
+  if (!local && (file == "LIST" || file.find('%') != std::string::npos))
     throw InputError(path + ": 'ElementDataFile = " + file.substr(0, 60) +
                      "' splits the values over several files; lucent reads one: " + kMetaFix);
   d.dataPath = local ? path : besideHeader(path, file);
   double headerSize = 0;
-  if (!parseNumber(key(f, "HeaderSize", "0"), headerSize) || headerSize < -1)
+  const double dataBytes = fileBytes(d.dataPath);
+  if (!parseNumber(key(f, "HeaderSize", "0"), headerSize) || headerSize < -1 ||
+      headerSize > dataBytes || headerSize != std::floor(headerSize))
     throw InputError(path + ": 'HeaderSize = " + key(f, "HeaderSize", "") +
-                     "' is not -1 or a "
-                     "byte count; " +
-                     kMetaFix);
-  const double dataBytes = fileBytes(d.dataPath), offset = local ? f.dataOffset : 0;
-  const double available = dataBytes - offset - std::max(headerSize, 0.0);
+                     "' is not -1 or a byte count within the data file; " + kMetaFix);
+  // MetaIO seeks to HeaderSize from the data file's start; 0 means right after a LOCAL header.
+  const double start = headerSize > 0 ? headerSize : (local ? f.dataOffset : 0);
   const double needed = valuesNeeded(d);
-  if (isTrue(key(f, "CompressedData", "False"))) {
-    double declared = 0;
-    if (f.keys.count("CompressedDataSize") &&
-        (!parseNumber(key(f, "CompressedDataSize", ""), declared) || declared > available))
-      throw InputError(path + ": 'CompressedDataSize = " + key(f, "CompressedDataSize", "") +
-                       "' but the file holds " + numberShown(available) +
-                       " bytes of values; the file is truncated or its header wrong: " + kMetaFix);
-    d.valuesPresent = std::floor(
-        inflatedBytes(d.dataPath, offset + std::max(headerSize, 0.0), needed * d.bytesPerValue) /
-        d.bytesPerValue);
-  } else if (!isTrue(key(f, "BinaryData", "True"))) {
-    d.valuesPresent = textTokens(d.dataPath, offset, needed);
-  } else {
+  const bool compressed = isTrue(key(f, "CompressedData", "False"));
+  if (compressed && headerSize == -1)
+    throw InputError(path + ": 'HeaderSize = -1' with compressed data (MetaIO cannot find it); " +
+                     kMetaFix);
+  if (compressed)
     d.valuesPresent =
-        std::floor((headerSize == -1 ? dataBytes - offset : available) / d.bytesPerValue);
-  }
+        valuesIn(inflatedBytes(d.dataPath, start, needed * d.bytesPerValue, Compression::Zlib,
+                               compressedBytes(path, f, local, dataBytes - start)),
+                 d.bytesPerValue);
+  else if (!isTrue(key(f, "BinaryData", "True")))
+    d.valuesPresent = textTokens(d.dataPath, start, needed);
+  else  // HeaderSize -1: the values are the file's last bytes
+    d.valuesPresent =
+        valuesIn(headerSize == -1 ? dataBytes - (local ? f.dataOffset : 0) : dataBytes - start,
+                 d.bytesPerValue);
 }
 }  // namespace
 

@@ -98,7 +98,7 @@ HeaderBytes niftiHeader(const std::string& path, bool gz) {
 namespace {
 /// The NIfTI-1 or -2 fields lucent needs, in doubles.
 struct NiftiFields {
-  double dim[8], pixdim[8], voxOffset;
+  double dim[8], pixdim[8], voxOffset, sclSlope, sclInter;
   int datatype, bitpix;
 };
 
@@ -120,6 +120,11 @@ NiftiFields niftiFields(const std::string& path, const HeaderBytes& h) {
   f.datatype = h.at<std::int16_t>(two ? 12 : 70);
   f.bitpix = h.at<std::int16_t>(two ? 14 : 72);
   f.voxOffset = two ? double(h.at<std::int64_t>(168)) : h.at<float>(108);
+  f.sclSlope = two ? h.at<double>(176) : h.at<float>(112);
+  f.sclInter = two ? h.at<double>(184) : h.at<float>(116);
+  if (!std::isfinite(f.sclSlope) || (f.sclSlope != 0 && !std::isfinite(f.sclInter)))
+    throw InputError(path + ": the rescale (scl_slope " + numberShown(f.sclSlope) + ", scl_inter " +
+                     numberShown(f.sclInter) + ") is not finite; " + kNiftiFix);
   return f;
 }
 
@@ -129,7 +134,12 @@ void niftiAxes(const std::string& path, const NiftiFields& f, DeclaredVolume& d)
     throw InputError(path + ": dim[0] is " + numberShown(rank) +
                      "; a NIfTI volume has 3 to 7 dimensions (the first 3 spatial): " + kNiftiFix);
   double volumes = 1;
-  for (int i = 4; i <= int(rank); ++i) volumes *= f.dim[i];
+  for (int i = 4; i <= int(rank); ++i) {
+    if (!(f.dim[i] >= 1))
+      throw InputError(path + ": dim[" + std::to_string(i) + "] is " + numberShown(f.dim[i]) +
+                       "; every size is at least 1: " + kNiftiFix);
+    volumes *= f.dim[i];
+  }
   if (volumes != 1)
     throw InputError(path + ": holds " + numberShown(volumes) +
                      " volumes (dim[4..7]: a time "
@@ -158,8 +168,10 @@ DeclaredVolume declaredNifti(const std::string& path) {
     throw InputError(path + ": vox_offset " + numberShown(f.voxOffset) +
                      " does not point past the header; " + kNiftiFix);
   const double needed = valuesNeeded(d) * d.bytesPerValue;
-  const double bytes = gz ? inflatedBytes(path, 0, f.voxOffset + needed) : fileBytes(path);
-  d.valuesPresent = std::floor(std::max(0.0, bytes - f.voxOffset) / d.bytesPerValue);
+  const double bytes =
+      gz ? inflatedBytes(path, 0, f.voxOffset + needed, Compression::Gzip, fileBytes(path))
+         : fileBytes(path);
+  d.valuesPresent = valuesIn(bytes - f.voxOffset, d.bytesPerValue);
   checkDeclaredVolume(path, d);
   return d;
 }

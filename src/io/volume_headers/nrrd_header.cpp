@@ -85,25 +85,36 @@ struct NrrdFields {
 NrrdFields readNrrdFields(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
-  if (!std::getline(in, line) || line.compare(0, 4, "NRRD") != 0)
+  if (!headerLine(in, line, path) || line.compare(0, 4, "NRRD") != 0)
     throw InputError(path + ": not a NRRD file (its first line is not NRRD000X); " + kNrrdFix);
   NrrdFields out;
-  constexpr std::size_t kMaxHeaderLines = 4096;  // real headers have tens
-  while (std::getline(in, line)) {
-    if (trimmed(line).empty()) {
+  constexpr std::size_t kMaxLines = 4096, kMaxLine = 65536;  // real headers: tens of short lines
+  while (headerLine(in, line, path)) {
+    if (line.empty() || line == "\r") {  // the blank line VTK ends the header at
       out.dataOffset = double(in.tellg());
       return out;
     }
-    if (out.fields.size() > kMaxHeaderLines)
-      throw InputError(path + ": the header has more than 4096 lines; " + kNrrdFix);
-    if (line[0] == '#' || line.find(":=") != std::string::npos) continue;  // comment, key/value
-    const auto colon = line.find(": ");
+    if (out.fields.size() > kMaxLines || line.size() > kMaxLine)
+      throw InputError(path + ": the header has more than 4096 lines or a line over 64 KB; " +
+                       kNrrdFix);
+    if (line[0] == '#') continue;
+    const auto colon = line.find(": ");  // VTK looks for ": " first, then ":="
+    if (colon == std::string::npos && line.find(":=") != std::string::npos) continue;
     if (colon == std::string::npos)
       throw InputError(path + ": the header line '" + line.substr(0, 60) +
                        "' is not 'field: description'; " + kNrrdFix);
     out.fields.emplace_back(line.substr(0, colon), trimmed(line.substr(colon + 2)));
   }
   return out;
+}
+
+/// A whole decimal number as VTK's atoi reads it to the end (no 1e2, no 0x40); NaN otherwise.
+double decimal(const std::string& text) {
+  if (text.empty() || text.size() > 15 ||
+      text.find_first_not_of("-0123456789") != std::string::npos ||
+      text.find('-', 1) != std::string::npos)
+    return NAN;
+  return std::stod(text);
 }
 
 /// Spacings from "spacings" or the lengths of "space directions" vectors ("none": 0).
@@ -139,6 +150,7 @@ namespace {
 /// The fields lucent needs, each checked as it is read.
 struct NrrdFacts {
   double dimension = 0;
+  int dimensionLines = 0;
   std::vector<double> sizes, spacings;
   std::string encoding = "raw";
   bool spaceBeforeSizes = false;  ///< VTK then keeps only three sizes
@@ -147,13 +159,22 @@ struct NrrdFacts {
 void readNrrdField(const std::string& path, const std::string& field, const std::string& text,
                    NrrdFacts& f, DeclaredVolume& d) {
   const std::string quoted = "'" + field + ": " + text.substr(0, 60) + "'";
-  if (field == "dimension" && !parseNumber(text, f.dimension))
-    throw InputError(path + ": " + quoted + " is not a number; " + kNrrdFix);
+  if (field == "dimension" && (++f.dimensionLines > 1 || !f.sizes.empty()))
+    throw InputError(path + ": " + quoted +
+                     " is repeated or comes after 'sizes', and VTK's "
+                     "reader then reads other sizes; give one dimension line first: " +
+                     kNrrdFix);
+  if (field == "dimension" && !std::isfinite(f.dimension = decimal(text)))
+    throw InputError(path + ": " + quoted + " is not a whole decimal number; " + kNrrdFix);
+  if (field == "space dimension" && decimal(text) != 3)
+    throw InputError(path + ": " + quoted + "; lucent reads 3-D space: " + kNrrdFix);
   if (field == "sizes")
-    for (const std::string& w : words(text)) {
-      double v = 0;
-      f.sizes.push_back(parseNumber(w, v) ? v : NAN);
-    }
+    for (const std::string& w : words(text))
+      if (!std::isfinite(f.sizes.emplace_back(decimal(w))))
+        throw InputError(path + ": " + quoted +
+                         " are not whole decimal numbers (VTK reads them "
+                         "with atoi); " +
+                         kNrrdFix);
   if (field == "spacings" || field == "space directions") f.spacings = nrrdSpacings(field, text);
   if ((field == "space" || field == "space dimension") && f.sizes.empty())
     f.spaceBeforeSizes = true;
@@ -166,8 +187,12 @@ void readNrrdField(const std::string& path, const std::string& field, const std:
     for (char& c : f.encoding) c = char(std::tolower(static_cast<unsigned char>(c)));
     if (f.encoding == "gz") f.encoding = "gzip";
     if (f.encoding == "txt" || f.encoding == "text") f.encoding = "ascii";
-    if (f.encoding != "raw" && f.encoding != "gzip" && f.encoding != "ascii")
-      throw InputError(path + ": " + quoted + " is not read by VTK (raw, gzip and ascii are); " +
+    if (f.encoding == "ascii")  // VTK 9.1 parses the header as values and bytes as characters
+      throw InputError(path + ": " + quoted +
+                       " is misread by VTK's reader (it does not skip "
+                       "the header); re-save it raw or gzip (unu save -e raw), or as .vti");
+    if (f.encoding != "raw" && f.encoding != "gzip")
+      throw InputError(path + ": " + quoted + " is not read by VTK (raw and gzip are); " +
                        kNrrdFix);
   }
   if (field == "data file" || field == "datafile") {
@@ -201,11 +226,16 @@ void nrrdAxes(const std::string& path, const NrrdFacts& f, DeclaredVolume& d) {
                      ": 'space' comes before 'sizes' in a 4-D header, and VTK's reader "
                      "then drops the fourth size; put 'sizes' first, or convert to .vti");
   const std::size_t first = f.dimension == 4 ? 1 : 0;
+  if (!f.spacings.empty() && f.spacings.size() != f.sizes.size())
+    throw InputError(path + ": " + std::to_string(f.spacings.size()) + " spacings for " +
+                     std::to_string(f.sizes.size()) +
+                     " axes (VTK's reader would shift them; give "
+                     "'none' for the components' axis); " +
+                     kNrrdFix);
   d.components = first ? f.sizes[0] : 1;
-  const std::size_t spacingFirst = f.spacings.size() == f.sizes.size() ? first : 0;
   for (int a = 0; a < 3; ++a) {
     d.dims[a] = f.sizes[first + a];
-    if (spacingFirst + a < f.spacings.size()) d.spacing[a] = f.spacings[spacingFirst + a];
+    if (!f.spacings.empty()) d.spacing[a] = f.spacings[first + a];
   }
 }
 
@@ -218,14 +248,18 @@ void countNrrdValues(const std::string& path, const NrrdFacts& f, double dataOff
                      ": the header neither ends in a blank line before the values nor "
                      "names a 'data file'; " +
                      kNrrdFix);
-  const double offset = attached ? dataOffset : 0, needed = valuesNeeded(d);
-  if (f.encoding == "raw")
-    d.valuesPresent = std::floor((fileBytes(d.dataPath) - offset) / d.bytesPerValue);
-  else if (f.encoding == "gzip")
-    d.valuesPresent =
-        std::floor(inflatedBytes(d.dataPath, offset, needed * d.bytesPerValue) / d.bytesPerValue);
-  else
-    d.valuesPresent = textTokens(d.dataPath, offset, needed);
+  const double offset = attached ? dataOffset : 0, bytes = fileBytes(d.dataPath) - offset;
+  if (f.encoding == "raw") return void(d.valuesPresent = valuesIn(bytes, d.bytesPerValue));
+  // VTK's gzip path reads one value per voxel (not per component) through gzread, whose count is
+  // an int: both would leave most of the volume uninitialised.
+  const double needed = valuesNeeded(d) * d.bytesPerValue;
+  if (d.components != 1 || needed >= 2147483647.0)
+    throw InputError(path + ": gzip NRRD with " + numberShown(d.components) + " components and " +
+                     numberShown(needed) +
+                     " bytes: VTK's reader takes one component under 2 GB "
+                     "compressed; re-save it raw (unu save -e raw), or as .vti");
+  d.valuesPresent = valuesIn(inflatedBytes(d.dataPath, offset, needed, Compression::Gzip, bytes),
+                             d.bytesPerValue);
 }
 }  // namespace
 
