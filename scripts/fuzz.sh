@@ -2,7 +2,7 @@
 # libFuzzer (clang) on lucent's input paths: mesh files (.obj, .ply, .stl, .off), the EXR environment reader,
 # the .vti and .vdb density readers, every scan format --volume reads (.nrrd, .mha, .nii, .nii.gz, .vtk, a
 # DICOM folder), the CLI's arguments. Builds build-fuzz/ with ASan + UBSan, runs each target for
-# LUCENT_FUZZ_SECONDS (default 12, keeping CI's test command within 45 minutes; run longer by hand) from the
+# LUCENT_FUZZ_SECONDS (default 10, keeping CI's test command within 45 minutes; run longer by hand) from the
 # seed corpus in fuzz/corpus/, and fails on any finding (the input is kept in build-fuzz/findings/: copy it
 # into fuzz/corpus/TARGET/ as a regression input).
 set -euo pipefail
@@ -14,7 +14,7 @@ scripts/lib/apt-install-missing.sh clang libclang-rt-14-dev
 targets=(fuzz_mesh_obj fuzz_mesh_ply fuzz_mesh_stl fuzz_mesh_off fuzz_exr fuzz_volume fuzz_volume_vdb
   fuzz_scan_nrrd fuzz_scan_mha fuzz_scan_nii fuzz_scan_nii_gz fuzz_scan_vtk fuzz_scan_dicom fuzz_cli_args)
 cmake --build build-fuzz -j"$(nproc)" --target "${targets[@]}"
-seconds=${LUCENT_FUZZ_SECONDS:-12}
+seconds=${LUCENT_FUZZ_SECONDS:-10}
 mkdir -p build-fuzz/findings
 export ASAN_OPTIONS="detect_leaks=1"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"

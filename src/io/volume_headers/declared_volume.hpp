@@ -56,6 +56,12 @@ bool parseNumber(const std::string& text, double& value);
 bool headerLine(std::istream& in, std::string& line, const std::string& path,
                 std::size_t maxBytes = 65536);
 
+/// `s` without leading and trailing blanks (spaces, tabs, a carriage return).
+std::string trimmed(const std::string& s);
+
+/// The whitespace-separated words of `s`.
+std::vector<std::string> words(const std::string& s);
+
 /// Bytes in the file at `path`; InputError naming `path` when it cannot be read.
 double fileBytes(const std::string& path);
 

@@ -85,6 +85,8 @@ class DicomWalker {
       mExplicit = true;
     else if (uid == "1.2.840.10008.1.2.2")
       mExplicit = true, mBig = true;
+    else if (uid.empty())
+      fail("has a meta header without a Transfer Syntax UID (0002,0010); re-export the series");
     else
       fail("is stored in transfer syntax " + uid.substr(0, 64) +
            " (compressed), which VTK's "

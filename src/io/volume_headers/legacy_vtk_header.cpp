@@ -27,12 +27,6 @@ double legacyTypeBytes(std::string type) {
   return it == bytes.end() ? 0 : it->second;
 }
 
-std::vector<std::string> words(const std::string& line) {
-  std::istringstream in(line);
-  std::vector<std::string> out;
-  for (std::string w; in >> w;) out.push_back(w);
-  return out;
-}
 
 std::string upper(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), ::toupper);

@@ -31,12 +31,6 @@ double metaTypeBytes(const std::string& type) {
   return it == bytes.end() ? 0 : it->second;
 }
 
-std::string trimmed(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
-
 /// The numbers of `text` (NaN for a word that is not one).
 std::vector<double> numbers(const std::string& text) {
   std::istringstream in(text);

@@ -63,18 +63,6 @@ double nrrdTypeBytes(const std::string& type) {
   return it == bytes.end() ? 0 : it->second;
 }
 
-std::string trimmed(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
-
-std::vector<std::string> words(const std::string& s) {
-  std::istringstream in(s);
-  std::vector<std::string> out;
-  for (std::string w; in >> w;) out.push_back(w);
-  return out;
-}
 
 /// The header's fields, in order, and the byte where the values start (when attached).
 struct NrrdFields {
@@ -197,7 +185,7 @@ void readNrrdField(const std::string& path, const std::string& field, const std:
   }
   if (field == "data file" || field == "datafile") {
     const auto parts = words(text);
-    if (parts.size() != 1)
+    if (parts.size() != 1 || parts[0] == "LIST")
       throw InputError(path + ": " + quoted +
                        " splits the values over several files; lucent "
                        "reads one data file: join them (unu join) or convert to .vti");
