@@ -139,7 +139,7 @@ int runBench(int argc, char** argv) {
   std::vector<NamedOutput> written = knobOutputs(all);
   for (const char* option : {"csv", "plot"})
     if (args.has(option)) written.push_back({std::string("--") + option, args.get(option)});
-  checkOutputs(args, written);
+  checkOutputs(args, written, sceneInputFiles(args));
 
   Scene scene = buildScene(args);
   const bool progress = !args.has("quiet");

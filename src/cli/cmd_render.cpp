@@ -150,7 +150,7 @@ int runRender(int argc, char** argv) {
   std::vector<NamedOutput> written = knobOutputs({knobs});
   for (const auto& o : outputs) written.push_back({"--out", o});
   if (args.has("stats")) written.push_back({"--stats", args.get("stats")});
-  checkOutputs(args, written);
+  checkOutputs(args, written, sceneInputFiles(args));
 
   Scene scene = buildScene(args);
   // The plan reads the pixels the camera sees; the render takes the same ones.

@@ -62,7 +62,8 @@ void checkOne(const std::string& command, const NamedOutput& o) {
 }
 }  // namespace
 
-void checkOutputs(const Args& args, const std::vector<NamedOutput>& outputs) {
+void checkOutputs(const Args& args, const std::vector<NamedOutput>& outputs,
+                  const std::vector<NamedOutput>& hidden) {
   const std::string prefix = "lucent " + args.command() + ": ";
   std::set<std::string> outputOptions;  // "out", "stats", "knob": what they name is written
   for (const NamedOutput& o : outputs)
@@ -76,6 +77,11 @@ void checkOutputs(const Args& args, const std::vector<NamedOutput>& outputs) {
             throw InputError(prefix + o.option + " " + o.path + " is the input --" + name + " " +
                              value + "; writing it would replace the input: give another name");
   }
+  for (const NamedOutput& input : hidden)
+    for (const NamedOutput& o : outputs)
+      if (sameFile(o.path, input.path))
+        throw InputError(prefix + o.option + " " + o.path + " is read by " + input.option +
+                         "; writing it would replace the input: give another name");
   std::set<std::string> seen;
   for (const NamedOutput& o : outputs) {
     checkOne(args.command(), o);

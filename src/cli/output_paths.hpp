@@ -18,6 +18,9 @@ struct NamedOutput {
 /// Throws InputError for the first output that cannot be written. Inputs are the existing files
 /// any other option of `args` names (whole, or as a part between ':', ',' and '=': env:FILE.exr,
 /// FILE.vti:ARRAY), so a new option that reads a file is covered without a list to keep.
-void checkOutputs(const Args& args, const std::vector<NamedOutput>& outputs);
+/// `hidden` adds inputs no option names directly (a scan header's data file, a DICOM folder's
+/// slices: scene_setup's sceneInputFiles), each with the option that reads it.
+void checkOutputs(const Args& args, const std::vector<NamedOutput>& outputs,
+                  const std::vector<NamedOutput>& hidden = {});
 
 }  // namespace lucent::cli

@@ -259,7 +259,8 @@ std::shared_ptr<const scene::VoxelGrid> readScan(const Args& args, Scene& s,
     }
   if (medium && medium->mask) {
     if (args.has("iso"))
-      args.fail("--iso " + args.get("iso") + ": a label map's surface is where its labels with a "
+      args.fail("--iso " + args.get("iso") +
+                ": a label map's surface is where its labels with a "
                 "material end, not an isosurface; drop --iso (or give a points: transfer)");
     s.mesh = io::scanIsosurface(*medium->mask, 0.5,
                                 "--volume " + path + " (its labels with a material)");
@@ -336,6 +337,17 @@ std::vector<OptionSpec> sceneOptionSpecs() {
   };
   for (auto& m : materialOptionSpecs()) specs.push_back(m);
   return specs;
+}
+
+std::vector<NamedOutput> sceneInputFiles(const Args& args) {
+  std::vector<NamedOutput> files;
+  if (!args.has("volume")) return files;
+  std::string path = args.get("volume");
+  const auto colon = path.rfind(':');  // FILE[:ARRAY], as readScan splits it
+  if (!std::filesystem::exists(path) && colon != std::string::npos) path = path.substr(0, colon);
+  for (const std::string& file : io::volumeInputFiles(path))
+    files.push_back({"--volume " + args.get("volume"), file});
+  return files;
 }
 
 Scene buildScene(const Args& args) {
@@ -416,7 +428,8 @@ Scene buildScene(const Args& args) {
   const glm::dvec3 view = args.triple("view", glm::dvec3(0, 0.6, 1));
   if (glm::length(view) <= 0) args.fail("--view must not be the zero vector");
   if (!std::isfinite(glm::dot(view, view)))
-    args.fail("--view " + args.get("view") + ": the direction's length must be finite; give a "
+    args.fail("--view " + args.get("view") +
+              ": the direction's length must be finite; give a "
               "shorter vector (only its direction counts)");
   s.camera = scene::PinholeCamera::frame(s.mesh.bounds(), view, w, h);
   s.ownedCaster = std::make_unique<raycast::EmbreeRayCaster>(s.mesh);

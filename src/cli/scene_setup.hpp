@@ -14,6 +14,7 @@
 #include <lucent/technique/scene.hpp>
 
 #include "args.hpp"
+#include "output_paths.hpp"
 
 namespace lucent::cli {
 
@@ -30,5 +31,9 @@ struct Scene : technique::SceneDescription {
 std::vector<OptionSpec> sceneOptionSpecs();
 /// Builds the scene from parsed options; throws InputError on bad input (with the fix).
 Scene buildScene(const Args& args);
+
+/// The files a scan read by --volume touches beyond the path given (a header's detached data file,
+/// a DICOM folder's slices), for checkOutputs.
+std::vector<NamedOutput> sceneInputFiles(const Args& args);
 
 }  // namespace lucent::cli

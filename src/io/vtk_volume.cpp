@@ -190,4 +190,22 @@ scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arr
   }
 }
 
+std::vector<std::string> volumeInputFiles(const std::string& path) {
+  std::vector<std::string> files{path};
+  std::error_code ec;
+  try {
+    if (std::filesystem::is_directory(path, ec)) {
+      for (const auto& entry : std::filesystem::directory_iterator(path, ec))
+        if (entry.is_regular_file() && files.size() <= 100000) files.push_back(entry.path());
+    } else if (endsWith(path, ".nrrd") || endsWith(path, ".nhdr")) {
+      files.push_back(nrrdDataFile(path));
+    } else if (endsWith(path, ".mha") || endsWith(path, ".mhd")) {
+      files.push_back(metaImageDataFile(path));
+    }
+  } catch (const InputError&) {
+  }
+  files.erase(std::remove(files.begin(), files.end(), std::string()), files.end());
+  return files;
+}
+
 }  // namespace lucent::io

@@ -5,6 +5,7 @@
 /// ParaView user's CT or MRI scan becomes a medium. Orientation matrices (NIfTI's qform/sform, DICOM's
 /// direction cosines) are not applied: the grid is axis-aligned at the file's origin and spacing.
 #include <string>
+#include <vector>
 
 #include <lucent/scene/voxel_grid.hpp>
 
@@ -15,5 +16,10 @@ namespace lucent::io {
 /// intercept. Throws InputError naming the file, the problem (missing, unreadable, no such array,
 /// non-positive spacing, empty, too large) and the fix.
 scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arrayName = "");
+
+/// The files reading `path` touches: the file, the detached data file its header names, or every
+/// file of a DICOM folder. No output may be one of them (cli/output_paths.cpp). Best effort: a
+/// header that cannot be read gives the file alone (reading it says why).
+std::vector<std::string> volumeInputFiles(const std::string& path);
 
 }  // namespace lucent::io

@@ -35,7 +35,7 @@ TEST_CASE(
   const std::string envBytes = slurp(env);
   std::filesystem::create_directories(dir / "folder");
   const std::string base = "render --mesh " + mesh + " --width 8 --height 8 --quiet ";
-  const std::vector<std::pair<std::string, std::string>> cases = {
+  std::vector<std::pair<std::string, std::string>> cases = {
       {base + "--out " + dir / "a.png --stats " + mesh, "--stats " + mesh + " is the input --mesh"},
       {"render --shape sphere --light env:" + env + " --width 8 --height 8 --out " + env,
        "is the input --light env:"},
@@ -49,6 +49,14 @@ TEST_CASE(
       {base + "--light env:" + env + " --out " +
            dir / "a.png --method pathtrace --knob stderr=" + env,
        "--knob stderr " + env + " is the input --light"}};
+  // A scan's hidden inputs: the data file a detached NRRD header names, a DICOM folder's slice.
+  std::ofstream(dir / "scan.nhdr") << "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 16 16 16\n"
+                                      "encoding: raw\ndata file: scan.raw\n";
+  std::ofstream(dir / "scan.raw") << std::string(4096, '\x40');
+  cases.push_back({"render --volume " + dir / "scan.nhdr" +
+                       " --iso 50 --width 8 --height 8 --out " + dir / "a.png --stats " +
+                       dir / "scan.raw",
+                   "is read by --volume"});
   for (const auto& [args, expected] : cases) {
     const Run r = lucentCli(args, dir);
     INFO(args << "\n" << r.err);
@@ -58,5 +66,6 @@ TEST_CASE(
     CHECK_FALSE(std::filesystem::exists(dir / "a.exr"));
     CHECK(slurp(mesh) == kTetrahedron);
     CHECK(slurp(env) == envBytes);
+    CHECK(slurp(dir / "scan.raw") == std::string(4096, '\x40'));
   }
 }

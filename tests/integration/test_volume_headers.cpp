@@ -229,6 +229,26 @@ const std::vector<ProbeCase> kProbeCases = {
                    zlibbed(kBall));
      },
      "needs CompressedDataSize"},
+    {"NRRD spacing 1e20 on one axis (the isosurface degenerates)",
+     [](auto& d) {
+       return nrrd(d, kRaw + "dimension: 3\nsizes: 16 16 16\nspacings: 1e20 1 1\n", kBall);
+     },
+     "spacing along x is 1e+20; spacing must lie in"},
+    {"NRRD spacings 1000x apart",
+     [](auto& d) {
+       return nrrd(d, kRaw + "dimension: 3\nsizes: 16 16 16\nspacings: 0.01 1 20\n", kBall);
+     },
+     "differs more than 1000x between axes"},
+    {"NRRD unknown field (a typo)",
+     [](auto& d) {
+       return nrrd(d, kRaw + "dimension: 3\nsizes: 16 16 16\nspacing: 1 1 1\n", kBall);
+     },
+     "'spacing: 1 1 1' is not a NRRD field"},
+    {"NRRD header line with a NUL and control bytes",
+     [](auto& d) {
+       return nrrd(d, kRaw + std::string("dimension: 3\nsizes: 16\x00\x01 16 16\n", 31), kBall);
+     },
+     "'sizes: 16?? 16 16' are not whole decimal numbers"},
     {"DICOM empty Pixel Representation",
      [](auto& d) {
        return dicom(d, 4, [](int, std::string& s) {

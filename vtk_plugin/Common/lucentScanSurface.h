@@ -43,11 +43,8 @@ inline scene::VoxelGrid voxelGridOf(vtkImageData* image, vtkDataArray* array,
   for (int k = 0; k < 3; ++k)
     if (!std::isfinite(spacing[k]) || !std::isfinite(origin[k]))
       throw RequestError(what + ": the volume's spacing or origin is not finite; fix the header");
-  for (int k = 0; k < 3; ++k)
-    if (!(spacing[k] > 0))
-      throw RequestError(what + ": the voxel spacing along axis " + std::to_string(k) + " is " +
-                         technique::numberText(spacing[k]) +
-                         "; it must be positive (fix the header)");
+  const std::string problem = scene::spacingProblem(spacing);
+  if (!problem.empty()) throw RequestError(what + ": " + problem + " (fix the header)");
   const double voxels = double(dims[0]) * dims[1] * dims[2];
   if (!(voxels > 0) || voxels > scene::kMaxVoxels)
     throw RequestError(what + ": " + std::to_string(dims[0]) + " x " + std::to_string(dims[1]) +

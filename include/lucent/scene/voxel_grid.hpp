@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 #include <glm/common.hpp>
@@ -15,6 +17,34 @@ namespace lucent::scene {
 /// The most voxels a reader densifies (4 bytes each: 2 GB); readers check it from the file's
 /// header, before allocating.
 inline constexpr double kMaxVoxels = 5e8;
+
+/// Voxel spacing a scan may have (millimetres: a nanometre to a kilometre), and the largest ratio
+/// between its axes: beyond these a scan's isosurface degenerates into zero-area triangles.
+inline constexpr double kMinVoxelSpacing = 1e-6;
+inline constexpr double kMaxVoxelSpacing = 1e6;
+inline constexpr double kMaxSpacingRatio = 1000;
+
+/// Why `spacing` is not a scan's (empty when it is): one rule for every reader.
+inline std::string spacingProblem(const double spacing[3]) {
+  const char* axis[3] = {"x", "y", "z"};
+  char text[160];
+  for (int a = 0; a < 3; ++a)
+    if (!(spacing[a] >= kMinVoxelSpacing && spacing[a] <= kMaxVoxelSpacing)) {
+      std::snprintf(text, sizeof text,
+                    "the voxel spacing along %s is %.6g; spacing must lie in [%g, %g] (mm)",
+                    axis[a], spacing[a], kMinVoxelSpacing, kMaxVoxelSpacing);
+      return text;
+    }
+  const double lo = std::min({spacing[0], spacing[1], spacing[2]});
+  const double hi = std::max({spacing[0], spacing[1], spacing[2]});
+  if (hi > kMaxSpacingRatio * lo) {
+    std::snprintf(text, sizeof text,
+                  "the voxel spacing (%.6g, %.6g, %.6g) differs more than %gx between axes",
+                  spacing[0], spacing[1], spacing[2], kMaxSpacingRatio);
+    return text;
+  }
+  return "";
+}
 
 struct VoxelGrid {
   glm::ivec3 dims{0};

@@ -15,6 +15,8 @@
 #include "../../util/error.hpp"
 #include "../voxel_bound.hpp"
 
+#include <lucent/scene/voxel_grid.hpp>
+
 namespace lucent::io {
 
 std::string numberShown(double v) {
@@ -52,10 +54,8 @@ void checkDeclaredVolume(const std::string& path, const DeclaredVolume& d) {
     throw InputError(path + ": the header declares " + shown(bytes / 1e9) +
                      " GB of values, more than lucent reads (" + shown(kMaxVolumeBytes / 1e9) +
                      " GB); resample the volume or extract one component");
-  for (int a = 0; a < 3; ++a)
-    if (!(std::isfinite(d.spacing[a]) && d.spacing[a] > 0))
-      throw InputError(path + ": the voxel spacing along " + kAxis[a] + " is " +
-                       shown(d.spacing[a]) + "; spacing must be finite and positive: " + fix);
+  const std::string spacing = scene::spacingProblem(d.spacing.data());
+  if (!spacing.empty()) throw InputError(path + ": " + spacing + ": " + fix);
   if (d.valuesPresent != kUnknown && d.valuesPresent < valuesNeeded(d))
     throw InputError(d.dataPath + ": holds " + shown(d.valuesPresent) + " of the " +
                      shown(valuesNeeded(d)) + " values the header of " + path +
@@ -83,6 +83,13 @@ bool headerLine(std::istream& in, std::string& line, const std::string& path,
     line += char(c);
   }
   return !line.empty();
+}
+
+std::string printable(const std::string& text, std::size_t max) {
+  std::string out = text.substr(0, max);
+  for (char& c : out)
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+  return out;
 }
 
 std::string trimmed(const std::string& s) {

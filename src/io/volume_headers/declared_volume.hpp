@@ -56,6 +56,10 @@ bool parseNumber(const std::string& text, double& value);
 bool headerLine(std::istream& in, std::string& line, const std::string& path,
                 std::size_t maxBytes = 65536);
 
+/// Header text as a message may quote it: at most `max` characters, control and non-ASCII bytes
+/// as '?' (a NUL cut the message short, raw control bytes reached the terminal).
+std::string printable(const std::string& text, std::size_t max = 60);
+
 /// `s` without leading and trailing blanks (spaces, tabs, a carriage return).
 std::string trimmed(const std::string& s);
 

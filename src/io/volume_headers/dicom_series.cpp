@@ -88,7 +88,7 @@ class DicomWalker {
     else if (uid.empty())
       fail("has a meta header without a Transfer Syntax UID (0002,0010); re-export the series");
     else
-      fail("is stored in transfer syntax " + uid.substr(0, 64) +
+      fail("is stored in transfer syntax " + printable(uid, 64) +
            " (compressed), which VTK's "
            "DICOM reader does not read; decompress it (gdcmconv --raw, dcmdjpeg)");
   }

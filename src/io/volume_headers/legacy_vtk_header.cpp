@@ -27,7 +27,6 @@ double legacyTypeBytes(std::string type) {
   return it == bytes.end() ? 0 : it->second;
 }
 
-
 std::string upper(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), ::toupper);
   return s;
@@ -55,7 +54,7 @@ DeclaredVolume declaredLegacyVtk(const std::string& path) {
     if (w.empty()) continue;
     const std::string key = upper(w[0]);
     if (key == "DATASET" && (w.size() < 2 || upper(w[1]) != "STRUCTURED_POINTS"))
-      throw InputError(path + ": the dataset is " + (w.size() < 2 ? "unnamed" : w[1]) +
+      throw InputError(path + ": the dataset is " + (w.size() < 2 ? "unnamed" : printable(w[1])) +
                        ", not STRUCTURED_POINTS (a volume); " + kVtkFix);
     if (key == "DIMENSIONS") three(w, d.dims);
     if (key == "SPACING" || key == "ASPECT_RATIO") three(w, d.spacing);

@@ -67,7 +67,7 @@ MetaFields readMetaFields(const std::string& path) {
     if (n > kMaxHeaderLines || line.size() > kMaxLine || key.empty() ||
         key.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_") !=
             std::string::npos)
-      throw InputError(path + ": '" + trimmed(line).substr(0, 60) +
+      throw InputError(path + ": '" + printable(trimmed(line)) +
                        "' is not a MetaImage 'Key = Value' line before ElementDataFile; " +
                        kMetaFix);
     if (!out.keys.emplace(key, trimmed(line.substr(sep + 1))).second)
@@ -92,11 +92,11 @@ std::string key(const MetaFields& f, const std::string& name, const std::string&
 void metaAxes(const std::string& path, const MetaFields& f, DeclaredVolume& d) {
   double nd = 0;
   if (!parseNumber(key(f, "NDims", ""), nd) || nd != 3)
-    throw InputError(path + ": 'NDims = " + key(f, "NDims", "(missing)") +
+    throw InputError(path + ": 'NDims = " + printable(key(f, "NDims", "(missing)")) +
                      "'; lucent reads 3-D volumes; " + kMetaFix);
   const auto dims = numbers(key(f, "DimSize", ""));
   if (dims.size() != 3)
-    throw InputError(path + ": 'DimSize = " + key(f, "DimSize", "(missing)").substr(0, 60) +
+    throw InputError(path + ": 'DimSize = " + printable(key(f, "DimSize", "(missing)")) +
                      "' does not give 3 sizes; " + kMetaFix);
   auto spacing = numbers(key(f, "ElementSpacing", key(f, "ElementSize", "1 1 1")));
   if (spacing.size() != 3)
@@ -105,7 +105,7 @@ void metaAxes(const std::string& path, const MetaFields& f, DeclaredVolume& d) {
   if (!parseNumber(key(f, "ElementNumberOfChannels", "1"), d.components)) d.components = NAN;
   d.bytesPerValue = metaTypeBytes(key(f, "ElementType", ""));
   if (d.bytesPerValue == 0)
-    throw InputError(path + ": 'ElementType = " + key(f, "ElementType", "(missing)") +
+    throw InputError(path + ": 'ElementType = " + printable(key(f, "ElementType", "(missing)")) +
                      "' is not a number type VTK reads (MET_UCHAR ... MET_DOUBLE); " + kMetaFix);
 }
 
@@ -116,7 +116,8 @@ double compressedBytes(const std::string& path, const MetaFields& f, bool local,
   const bool given = f.keys.count("CompressedDataSize") > 0;
   if (given && !(parseNumber(key(f, "CompressedDataSize", ""), declared) && declared >= 1 &&
                  declared == std::floor(declared) && declared <= available))
-    throw InputError(path + ": 'CompressedDataSize = " + key(f, "CompressedDataSize", "") +
+    throw InputError(path +
+                     ": 'CompressedDataSize = " + printable(key(f, "CompressedDataSize", "")) +
                      "' but the file holds " + numberShown(std::max(0.0, available)) +
                      " bytes of values; the file is truncated or its header wrong: " + kMetaFix);
   if (!given && local)
@@ -135,14 +136,14 @@ void countMetaValues(const std::string& path, const MetaFields& f, DeclaredVolum
   const std::string file = key(f, "ElementDataFile", "");
   const bool local = file == "LOCAL" || file == "Local" || file == "local";
   if (!local && (file == "LIST" || file.find('%') != std::string::npos))
-    throw InputError(path + ": 'ElementDataFile = " + file.substr(0, 60) +
+    throw InputError(path + ": 'ElementDataFile = " + printable(file) +
                      "' splits the values over several files; lucent reads one: " + kMetaFix);
   d.dataPath = local ? path : besideHeader(path, file);
   double headerSize = 0;
   const double dataBytes = fileBytes(d.dataPath);
   if (!parseNumber(key(f, "HeaderSize", "0"), headerSize) || headerSize < -1 ||
       headerSize > dataBytes || headerSize != std::floor(headerSize))
-    throw InputError(path + ": 'HeaderSize = " + key(f, "HeaderSize", "") +
+    throw InputError(path + ": 'HeaderSize = " + printable(key(f, "HeaderSize", "")) +
                      "' is not -1 or a byte count within the data file; " + kMetaFix);
   // MetaIO seeks to HeaderSize from the data file's start; 0 means right after a LOCAL header.
   const double start = headerSize > 0 ? headerSize : (local ? f.dataOffset : 0);
@@ -164,6 +165,12 @@ void countMetaValues(const std::string& path, const MetaFields& f, DeclaredVolum
                  d.bytesPerValue);
 }
 }  // namespace
+
+std::string metaImageDataFile(const std::string& path) {
+  const std::string file = key(readMetaFields(path), "ElementDataFile", "LOCAL");
+  if (file == "LOCAL" || file == "Local" || file == "local" || file == "LIST") return "";
+  return besideHeader(path, file);
+}
 
 DeclaredVolume declaredMetaImage(const std::string& path) {
   const MetaFields fields = readMetaFields(path);

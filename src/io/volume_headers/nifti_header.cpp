@@ -156,7 +156,10 @@ void niftiAxes(const std::string& path, const NiftiFields& f, DeclaredVolume& d)
 }  // namespace
 
 DeclaredVolume declaredNifti(const std::string& path) {
-  const bool gz = path.size() > 3 && path.compare(path.size() - 3, 3, ".gz") == 0;
+  // By its first bytes, as VTK's gzopen reads it: an uncompressed file named .nii.gz is read too.
+  std::string magic(2, '\0');
+  std::ifstream(path, std::ios::binary).read(magic.data(), 2);
+  const bool gz = magic == "\x1f\x8b";
   const HeaderBytes header = niftiHeader(path, gz);
   const NiftiFields f = niftiFields(path, header);
   DeclaredVolume d;

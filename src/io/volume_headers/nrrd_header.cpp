@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -63,7 +64,6 @@ double nrrdTypeBytes(const std::string& type) {
   return it == bytes.end() ? 0 : it->second;
 }
 
-
 /// The header's fields, in order, and the byte where the values start (when attached).
 struct NrrdFields {
   std::vector<std::pair<std::string, std::string>> fields;
@@ -89,7 +89,7 @@ NrrdFields readNrrdFields(const std::string& path) {
     const auto colon = line.find(": ");  // VTK looks for ": " first, then ":="
     if (colon == std::string::npos && line.find(":=") != std::string::npos) continue;
     if (colon == std::string::npos)
-      throw InputError(path + ": the header line '" + line.substr(0, 60) +
+      throw InputError(path + ": the header line '" + printable(line) +
                        "' is not 'field: description'; " + kNrrdFix);
     out.fields.emplace_back(line.substr(0, colon), trimmed(line.substr(colon + 2)));
   }
@@ -98,11 +98,14 @@ NrrdFields readNrrdFields(const std::string& path) {
 
 /// A whole decimal number as VTK's atoi reads it to the end (no 1e2, no 0x40); NaN otherwise.
 double decimal(const std::string& text) {
-  if (text.empty() || text.size() > 15 ||
-      text.find_first_not_of("-0123456789") != std::string::npos ||
-      text.find('-', 1) != std::string::npos)
-    return NAN;
-  return std::stod(text);
+  const std::size_t digits = text.size() - (text[0] == '-' ? 1 : 0);
+  if (text.empty() || digits == 0 || digits > 15 ||
+      text.find_first_not_of("0123456789", text.size() - digits) != std::string::npos)
+    return NAN;  // "-" alone was a std::stod exception (found by fuzz_scan_nrrd)
+  double value = 0;
+  for (std::size_t i = text.size() - digits; i < text.size(); ++i)
+    value = 10 * value + (text[i] - '0');
+  return text[0] == '-' ? -value : value;
 }
 
 /// Spacings from "spacings" or the lengths of "space directions" vectors ("none": 0).
@@ -144,9 +147,59 @@ struct NrrdFacts {
   bool spaceBeforeSizes = false;  ///< VTK then keeps only three sizes
 };
 
+/// The fields of the NRRD format (a key of one's own is written "key:=value"), as VTK knows them.
+bool knownNrrdField(const std::string& field) {
+  static const std::set<std::string> known = {"type",
+                                              "dimension",
+                                              "sizes",
+                                              "spacings",
+                                              "encoding",
+                                              "data file",
+                                              "datafile",
+                                              "space",
+                                              "labels",
+                                              "space dimension",
+                                              "space origin",
+                                              "space directions",
+                                              "endian",
+                                              "line skip",
+                                              "lineskip",
+                                              "byte skip",
+                                              "byteskip",
+                                              "space units",
+                                              "sample units",
+                                              "sampleunits",
+                                              "measurement frame",
+                                              "block size",
+                                              "blocksize",
+                                              "content",
+                                              "thicknesses",
+                                              "axis mins",
+                                              "axismins",
+                                              "axis maxs",
+                                              "axismaxs",
+                                              "centers",
+                                              "centerings",
+                                              "units",
+                                              "kinds",
+                                              "min",
+                                              "max",
+                                              "old min",
+                                              "oldmin",
+                                              "old max",
+                                              "oldmax",
+                                              "number"};
+  return known.count(field) > 0;
+}
+
 void readNrrdField(const std::string& path, const std::string& field, const std::string& text,
                    NrrdFacts& f, DeclaredVolume& d) {
-  const std::string quoted = "'" + field + ": " + text.substr(0, 60) + "'";
+  const std::string quoted = "'" + printable(field + ": " + text) + "'";
+  if (!knownNrrdField(field))
+    throw InputError(path + ": " + quoted +
+                     " is not a NRRD field (a typo of 'spacings'? a key of "
+                     "your own is written 'key:=value'); " +
+                     kNrrdFix);
   if (field == "dimension" && (++f.dimensionLines > 1 || !f.sizes.empty()))
     throw InputError(path + ": " + quoted +
                      " is repeated or comes after 'sizes', and VTK's "
@@ -185,6 +238,7 @@ void readNrrdField(const std::string& path, const std::string& field, const std:
   }
   if (field == "data file" || field == "datafile") {
     const auto parts = words(text);
+    if (parts.empty()) throw InputError(path + ": " + quoted + " names no file; " + kNrrdFix);
     if (parts.size() != 1 || parts[0] == "LIST")
       throw InputError(path + ": " + quoted +
                        " splits the values over several files; lucent "
@@ -250,6 +304,13 @@ void countNrrdValues(const std::string& path, const NrrdFacts& f, double dataOff
                              d.bytesPerValue);
 }
 }  // namespace
+
+std::string nrrdDataFile(const std::string& path) {
+  for (const auto& [field, text] : readNrrdFields(path).fields)
+    if ((field == "data file" || field == "datafile") && words(text).size() == 1)
+      return besideHeader(path, words(text)[0]);
+  return "";
+}
 
 DeclaredVolume declaredNrrd(const std::string& path) {
   const NrrdFields header = readNrrdFields(path);

@@ -12,6 +12,12 @@ namespace lucent::io {
 /// .nrrd / .nhdr: the text header up to its blank line (nrrd_header.cpp).
 DeclaredVolume declaredNrrd(const std::string& path);
 
+/// The detached data file a .nhdr/.nrrd header names ("" when the values are in the header's file).
+std::string nrrdDataFile(const std::string& path);
+
+/// The detached data file a .mhd/.mha header names ("" for LOCAL data).
+std::string metaImageDataFile(const std::string& path);
+
 /// .mha / .mhd: MetaImage's "Key = Value" lines up to ElementDataFile (metaimage_header.cpp).
 DeclaredVolume declaredMetaImage(const std::string& path);
 
