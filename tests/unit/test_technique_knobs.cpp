@@ -95,3 +95,29 @@ TEST_CASE("Capabilities: the unmet requirements are named") {
   CHECK(missing[0] == "an environment light");
   CHECK(unmet(Capabilities{}, Requirements{}).empty());
 }
+
+TEST_CASE(
+    "Outside its range, a technique names only the techniques that can also take the scene "
+    "(a scan's density field), not every one whose range holds") {
+  const auto technique = [](const char* name, bool heterogeneous, bool inRange) {
+    Technique t;
+    t.name = name;
+    t.capabilities.heterogeneousMedia = heterogeneous;
+    t.validity = [inRange](const SceneDescription&, const KnobValues&) {
+      return std::string(inRange ? "" : "the object is too small");
+    };
+    return t;
+  };
+  Registry r;
+  r.add(technique("narrow", true, false));
+  r.add(technique("uniform-only", false, true));
+  r.add(technique("any", true, true));
+  SceneDescription scene;
+  scene.medium.density = [](const glm::dvec3&) { return 0.5; };
+  const ShadeRequest request;
+  const Technique& narrow = r.get("narrow");
+  CHECK_THROWS_WITH_AS(r.checkRange(narrow, scene, narrow.values(), &request),
+                       doctest::Contains("with their defaults: any)"), RequestError);
+  CHECK_THROWS_WITH_AS(r.checkRange(narrow, scene, narrow.values()),
+                       doctest::Contains("defaults: uniform-only, any)"), RequestError);
+}

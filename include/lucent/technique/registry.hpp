@@ -81,13 +81,15 @@ class Registry {
   }
 
   /// Fails before any work when the scene lies outside the technique's valid range with these
-  /// knobs (Technique::validity), with the reason, the fix and the techniques whose range holds.
-  void checkRange(const Technique& t, const SceneDescription& scene,
-                  const KnobValues& knobs) const {
+  /// knobs (Technique::validity), with the reason, the fix and the techniques whose range holds
+  /// (with `request`: only those that can also take the scene, e.g. a scan's density field).
+  void checkRange(const Technique& t, const SceneDescription& scene, const KnobValues& knobs,
+                  const ShadeRequest* request = nullptr) const {
     const std::string why = t.validity ? t.validity(scene, knobs) : "";
     if (why.empty()) return;
     const std::string able = names([&](const Technique& o) {
-      return &o != &t && (!o.validity || o.validity(scene, o.values()).empty());
+      return &o != &t && (!request || unmetBy(o, scene, *request).empty()) &&
+             (!o.validity || o.validity(scene, o.values()).empty());
     });
     throw RequestError("technique '" + t.name + "' is outside its valid range here: " + why +
                        " (valid for: " + t.validRange + "; techniques valid here with their " +
@@ -99,7 +101,7 @@ class Registry {
                                     const KnobValues& knobs, const ShadeRequest& request,
                                     Statistics& stats) const {
     check(t, scene, request);
-    checkRange(t, scene, knobs);
+    checkRange(t, scene, knobs, &request);
     std::unique_ptr<Prepared> prepared = t.prepare(scene, knobs, stats);
     scene.checkCancelled();
     return prepared;
