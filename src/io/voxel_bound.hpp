@@ -2,6 +2,7 @@
 /// @file voxel_bound.hpp
 /// @brief The one check of scene::kMaxVoxels for every volume reader (VTK image data, OpenVDB),
 /// with the bound in its message derived from the constant.
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -11,6 +12,14 @@
 
 namespace lucent::io {
 
+/// A number from a file's header as a message shows it: whole numbers in full, others (and those
+/// beyond long, which a hostile header gives) to 6 digits.
+inline std::string numberShown(double v) {
+  char b[40];
+  std::snprintf(b, sizeof b, std::fabs(v) < 1e15 && v == std::floor(v) ? "%.0f" : "%.6g", v);
+  return b;
+}
+
 /// Throws InputError "<subject>W x H x D voxels, more than lucent <verb> (<bound>, <GB> GB); <fix>"
 /// when dims (doubles: a hostile extent can exceed int) hold more than scene::kMaxVoxels.
 inline void checkVoxelCount(const std::string& subject, const double dims[3],
@@ -19,13 +28,9 @@ inline void checkVoxelCount(const std::string& subject, const double dims[3],
   char bound[64];
   std::snprintf(bound, sizeof bound, "%g, %g GB", scene::kMaxVoxels,
                 scene::kMaxVoxels * sizeof(float) / 1e9);
-  const auto shown = [](double v) {  // a hostile header's size exceeds long: no cast
-    char b[32];
-    std::snprintf(b, sizeof b, v < 1e15 ? "%.0f" : "%.6g", v);
-    return std::string(b);
-  };
-  throw InputError(subject + shown(dims[0]) + " x " + shown(dims[1]) + " x " + shown(dims[2]) +
-                   " voxels, more than lucent " + verb + " (" + bound + "); " + fix);
+  throw InputError(subject + numberShown(dims[0]) + " x " + numberShown(dims[1]) + " x " +
+                   numberShown(dims[2]) + " voxels, more than lucent " + verb + " (" + bound +
+                   "); " + fix);
 }
 
 }  // namespace lucent::io

@@ -19,14 +19,7 @@
 
 namespace lucent::io {
 
-std::string numberShown(double v) {
-  char b[40];
-  std::snprintf(b, sizeof b, std::fabs(v) < 1e15 && v == std::floor(v) ? "%.0f" : "%.6g", v);
-  return b;
-}
-
 namespace {
-const auto shown = numberShown;
 
 bool wholeAtLeastOne(double v) { return std::isfinite(v) && v >= 1 && v == std::floor(v); }
 
@@ -41,24 +34,25 @@ void checkDeclaredVolume(const std::string& path, const DeclaredVolume& d) {
   const std::string fix = kReexportFix;
   for (int a = 0; a < 3; ++a)
     if (!wholeAtLeastOne(d.dims[a]))
-      throw InputError(path + ": the header declares " + shown(d.dims[a]) + " voxels along " +
+      throw InputError(path + ": the header declares " + numberShown(d.dims[a]) + " voxels along " +
                        kAxis[a] + "; sizes are whole numbers of at least 1: " + fix);
   checkVoxelCount(path + ": the header declares ", d.dims.data(), "reads",
                   "resample the volume (vtkImageResample, or ParaView's Resample To Image)");
   if (!wholeAtLeastOne(d.components) || d.components > kMaxVolumeComponents)
-    throw InputError(path + ": the header declares " + shown(d.components) +
-                     " values per voxel; lucent takes 1 to " + shown(kMaxVolumeComponents) +
+    throw InputError(path + ": the header declares " + numberShown(d.components) +
+                     " values per voxel; lucent takes 1 to " + numberShown(kMaxVolumeComponents) +
                      " (a scalar, a vector or RGB(A)): extract one component or one volume");
   const double bytes = valuesNeeded(d) * d.bytesPerValue;
   if (!(bytes <= kMaxVolumeBytes))
-    throw InputError(path + ": the header declares " + shown(bytes / 1e9) +
-                     " GB of values, more than lucent reads (" + shown(kMaxVolumeBytes / 1e9) +
+    throw InputError(path + ": the header declares " + numberShown(bytes / 1e9) +
+                     " GB of values, more than lucent reads (" +
+                     numberShown(kMaxVolumeBytes / 1e9) +
                      " GB); resample the volume or extract one component");
   const std::string spacing = scene::spacingProblem(d.spacing.data());
   if (!spacing.empty()) throw InputError(path + ": " + spacing + ": " + fix);
   if (d.valuesPresent != kUnknown && d.valuesPresent < valuesNeeded(d))
-    throw InputError(d.dataPath + ": holds " + shown(d.valuesPresent) + " of the " +
-                     shown(valuesNeeded(d)) + " values the header of " + path +
+    throw InputError(d.dataPath + ": holds " + numberShown(d.valuesPresent) + " of the " +
+                     numberShown(valuesNeeded(d)) + " values the header of " + path +
                      " declares; the file is truncated or its header wrong: re-export the scan");
 }
 

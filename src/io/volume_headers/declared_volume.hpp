@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "../voxel_bound.hpp"  // numberShown
+
 namespace lucent::io {
 
 /// Values as stored, all components: what a reader allocates before lucent converts them to its
@@ -44,9 +46,6 @@ void checkDeclaredVolume(const std::string& path, const DeclaredVolume& declared
 /// The fix every header problem shares.
 inline constexpr const char* kReexportFix =
     "fix the header, or re-export the scan (e.g. ParaView: File > Save Data as .vti)";
-
-/// A header's number as its author wrote it: whole numbers in full, others to 6 digits.
-std::string numberShown(double v);
 
 /// Parses `text` as a finite number (the whole token); false when it is not one.
 bool parseNumber(const std::string& text, double& value);
