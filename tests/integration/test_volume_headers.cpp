@@ -89,10 +89,27 @@ const std::vector<ProbeCase> kProbeCases = {
      "compressed data is corrupt"},
     {"NRRD header only",
      [](auto& d) {
-       writeFile(d / "v.nrrd", "NRRD0004\n" + kRaw + "dimension: 3\nsizes: 16 16 16");
+       writeFile(d / "v.nrrd", "NRRD0004\n" + kRaw + "dimension: 3\nsizes: 16 16 16\n");
        return d / "v.nrrd";
      },
      "neither ends in a blank line"},
+    {"NRRD detached header whose last line has no newline (VTK 9.1 repeats it forever)",
+     [](auto& d) {
+       writeFile(d / "v.raw", kBall);
+       writeFile(d / "v.nhdr",
+                 "NRRD0004\n" + kRaw + "dimension: 3\nsizes: 16 16 16\ndata file: v.raw");
+       return d / "v.nhdr";
+     },
+     "has no newline (VTK's reader would hang on it)"},
+    {"NRRD magic line with NUL bytes (a fuzz_scan_nrrd hang: VTK's header text ends at the NUL)",
+     [](auto& d) {
+       writeFile(d / "v.nrrd", std::string("NRRD\x0e\0\0\0\0\0\0\0"
+                                           "0004\n",
+                                           17) +
+                                   kRaw + "dimension: 3\nsizes: 16 16 16\n\n" + kBall);
+       return d / "v.nrrd";
+     },
+     "holds a NUL byte"},
     {"NRRD missing data file",
      [](auto& d) {
        return nrrd(d, kRaw + "dimension: 3\nsizes: 16 16 16\ndata file: gone.raw\n", "");
@@ -248,7 +265,7 @@ const std::vector<ProbeCase> kProbeCases = {
      [](auto& d) {
        return nrrd(d, kRaw + std::string("dimension: 3\nsizes: 16\x00\x01 16 16\n", 31), kBall);
      },
-     "'sizes: 16?? 16 16' are not whole decimal numbers"},
+     "'sizes: 16?? 16 16' holds a NUL byte"},
     {"DICOM empty Pixel Representation",
      [](auto& d) {
        return dicom(d, 4, [](int, std::string& s) {
