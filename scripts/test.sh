@@ -3,11 +3,24 @@
 # ParaView plugin's build and pvbatch tests (a build tree of its own, against ParaView's VTK).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
-scripts/lib/apt-install-missing.sh chromium   # the report page's browser test (tests/report/)
-scripts/build.sh
-scripts/corpus.sh        # the real-data corpus (.corpus/, from Debian packages) that the realdata tests read
-(cd build && ctest --output-on-failure -j"$(nproc)")
-scripts/sanitize.sh      # the unit and integration tests under ASan + UBSan
-scripts/fuzz.sh          # libFuzzer on the mesh, EXR, volume and argument readers, 20 s each
-scripts/paraview-plugin.sh
+
+# Each stage's wall time, on the terminal and in build/test-stages.log, so CI's 45-minute budget is
+# watched stage by stage.
+started=$SECONDS
+stage() {
+  local name=$1 begin=$SECONDS
+  shift
+  "$@"
+  mkdir -p build
+  echo "lucent test: ${name} took $((SECONDS - begin)) s (total $((SECONDS - started)) s)" |
+    tee -a build/test-stages.log
+}
+
+stage "install" scripts/install-deps.sh
+stage "chromium" scripts/lib/apt-install-missing.sh chromium   # the report page's browser test (tests/report/)
+stage "build" scripts/build.sh
+stage "corpus" scripts/corpus.sh   # the real-data corpus (.corpus/, from Debian packages) the realdata tests read
+stage "ctest" bash -c 'cd build && ctest --output-on-failure -j"$(nproc)"'
+stage "sanitize" scripts/sanitize.sh   # the unit and integration tests under ASan + UBSan
+stage "fuzz" scripts/fuzz.sh           # libFuzzer on the mesh, EXR, volume, scan and argument readers, 10 s each
+stage "paraview" scripts/paraview-plugin.sh
