@@ -22,6 +22,11 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 std::vector<glm::dvec3> surfacePositions(const quadgraph::QuadGraph& g) {
   return {g.positions.begin() + std::ptrdiff_t(g.innerCount()), g.positions.end()};
 }
+
+glm::dvec3 centroid(const scene::TriangleMesh& mesh, std::size_t t) {
+  const glm::uvec3 v = mesh.triangles[t];
+  return (glm::dvec3(mesh.positions[v.x]) + glm::dvec3(mesh.positions[v.y]) + glm::dvec3(mesh.positions[v.z])) / 3.0;
+}
 }  // namespace
 
 QuadGraphPipeline::QuadGraphPipeline(const scene::TriangleMesh& mesh, const std::string& meshName,
@@ -31,16 +36,23 @@ QuadGraphPipeline::QuadGraphPipeline(const scene::TriangleMesh& mesh, const std:
   tet.gradingK = options.gradingK;
   tet.radiusEdgeRatio = options.quality;
   util::ProgressBar bar("tetrahedralize + QuadGraph", progress);
+  const std::size_t finestTarget = options.surfaceTriangles > 0
+                                       ? std::min(options.surfaceTriangles, mesh.triangles.size())
+                                       : mesh.triangles.size();
+  mFinestIsInput = finestTarget == mesh.triangles.size();
+  scene::TriangleMesh previous;  // the last decimated level's surface
   for (int h = 0; h < options.levels; ++h) {
     Level level;
     // Each coarser level has about a quarter of the triangles (Sec. 4.3).
-    const std::size_t target = mesh.triangles.size() >> (2 * h);
+    const std::size_t target = finestTarget >> (2 * h);
     if (h > 0 && target < 64) {
       notes.push_back("quadgraph: stopped at " + std::to_string(h) + " levels (a coarser surface would have < 64 triangles)");
       break;
     }
-    const scene::TriangleMesh decimated = h == 0 ? scene::TriangleMesh{} : io::decimate(mesh, target);
-    const scene::TriangleMesh& surface = h == 0 ? mesh : decimated;
+    // Each level from the one before (a decimation of 167k contour triangles costs seconds).
+    if (!(h == 0 && mFinestIsInput)) previous = io::decimate(previous.triangles.empty() ? mesh : previous, target);
+    const scene::TriangleMesh& surface = h == 0 && mFinestIsInput ? mesh : previous;
+    if (h == 0) mSurfaceTriangles = surface.triangles.size();
     try {
       tetgen::TetReport report;
       const scene::TetMesh tm = tetgen::tetrahedralize(surface, tet, &report);
@@ -68,7 +80,10 @@ QuadGraphPipeline::QuadGraphPipeline(const scene::TriangleMesh& mesh, const std:
     mRestVertices.emplace_back(level.graph.vertices.begin(),
                                level.graph.vertices.begin() + std::ptrdiff_t(level.graph.inputVertexCount));
   computeTransfers();
-  mBary = quadgraph::sourceBarycentrics(finest(), mesh);
+  if (mFinestIsInput)
+    mBary = quadgraph::sourceBarycentrics(finest(), mesh);
+  else
+    mapInputMesh(mesh);
   mNodeSurface = quadgraph::triangulateSurfaceNodes(finest());
   if (mNodeSurface.openFans > 0)
     notes.push_back("quadgraph: " + std::to_string(mNodeSurface.openFans) +
@@ -86,6 +101,56 @@ void QuadGraphPipeline::computeTransfers() {
     mRestrictQ[h] = quadgraph::shepardWeights(surfacePositions(finest()), surfacePositions(mLevels[h].graph), 4);
 }
 
+void QuadGraphPipeline::mapInputMesh(const scene::TriangleMesh& mesh) {
+  const std::vector<glm::dvec3> nodes = surfacePositions(finest());
+  std::vector<glm::dvec3> centroids(mesh.triangles.size()), vertices(mesh.positions.begin(), mesh.positions.end());
+  for (std::size_t t = 0; t < centroids.size(); ++t) centroids[t] = centroid(mesh, t);
+  mTriangleNode = quadgraph::shepardWeights(nodes, centroids, 1).index;
+  mNodeFromTriangles = quadgraph::shepardWeights(centroids, nodes, 4);
+  mVertexFromNodes = quadgraph::shepardWeights(nodes, vertices, 4);
+}
+
+std::vector<glm::dvec3> QuadGraphPipeline::irradianceOnInput(const scene::TriangleMesh& mesh,
+                                                             const std::vector<glm::vec3>& vertexNormals,
+                                                             const std::vector<scene::Light>& lights,
+                                                             const scene::RayCaster& caster,
+                                                             const scene::IrradianceSettings& settings) const {
+  std::vector<glm::dvec3> perTriangle(mesh.triangles.size());
+  util::tbbFor(perTriangle.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t) {
+      const auto tri = std::uint32_t(t);
+      if (!(mesh.triangleArea(tri) > 0)) continue;  // no normal, no power: a degenerate input triangle
+      const glm::dvec3 faceN = glm::normalize(mesh.areaVector(tri));
+      const glm::dvec3 n = scene::shadingNormal(mesh, vertexNormals, tri, glm::dvec3(1.0 / 3.0));
+      perTriangle[t] = scene::irradianceAt(centroid(mesh, t), n, faceN, lights, caster, settings, t);
+    }
+  });
+  const std::size_t count = finest().surfaceCount();
+  std::vector<glm::dvec3> power(count, glm::dvec3(0));
+  std::vector<double> area(count, 0.0);
+  for (std::size_t t = 0; t < perTriangle.size(); ++t) {
+    const double a = mesh.triangleArea(t);
+    power[mTriangleNode[t]] += a * perTriangle[t], area[mTriangleNode[t]] += a;
+  }
+  const quadgraph::ShepardWeights& w = mNodeFromTriangles;
+  for (std::size_t s = 0; s < count; ++s) {
+    if (area[s] > 0) {
+      power[s] /= area[s];
+      continue;
+    }
+    for (std::size_t k = 0; k < w.b; ++k) power[s] += w.weight[s * w.b + k] * perTriangle[w.index[s * w.b + k]];
+  }
+  return power;
+}
+
+std::vector<double> QuadGraphPipeline::toInputVertices(const scene::TriangleMesh& mesh,
+                                                       const std::vector<double>& nodeValues) const {
+  if (mFinestIsInput) return quadgraph::nodesToVertices(finest(), mesh, mBary, nodeValues);
+  std::vector<double> out(mesh.positions.size());
+  mVertexFromNodes.apply(nodeValues.data(), out.data(), out.size());
+  return out;
+}
+
 std::vector<glm::dvec3> QuadGraphPipeline::irradiance(const scene::TriangleMesh& mesh,
                                                       const std::vector<glm::vec3>& vertexNormals,
                                                       const std::vector<scene::Light>& lights,
@@ -95,6 +160,7 @@ std::vector<glm::dvec3> QuadGraphPipeline::irradiance(const scene::TriangleMesh&
   irr.eta = eta;
   irr.rayEpsilon = 1e-5 * mesh.bounds().diagonal();
   irr.environmentStrata = mOptions.environmentStrata;
+  if (!mFinestIsInput) return irradianceOnInput(mesh, vertexNormals, lights, caster, irr);
   std::vector<glm::dvec3> q(fine.surfaceCount());
   util::tbbFor(q.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t s = begin; s < end; ++s) {

@@ -13,6 +13,7 @@
 #include <lucent/quadgraph/multiresolution.hpp>
 #include <lucent/quadgraph/node_surface.hpp>
 #include <lucent/quadgraph/solvers.hpp>
+#include <lucent/scene/irradiance.hpp>
 #include <lucent/scene/light.hpp>
 #include <lucent/scene/ray_caster.hpp>
 
@@ -29,6 +30,10 @@ struct QuadGraphOptions {
   quadgraph::Solver solver = quadgraph::Solver::ConjugateGradient;
   quadgraph::SolveOptions solve;
   int environmentStrata = 16;
+  /// The finest level's surface: the input decimated to this many triangles (VTK's quadric decimation;
+  /// 0 or more than the input's: the input as is). Irradiance and display then pass between the input
+  /// mesh and the graph's surface nodes (QuadGraphPipeline::irradiance, toInputVertices).
+  std::size_t surfaceTriangles = 0;
 };
 
 /// sigma_a and sigma_s' (mm^-1) at a position, for one colour channel.
@@ -57,12 +62,16 @@ class QuadGraphPipeline {
 
   const quadgraph::QuadGraph& finest() const { return mLevels.back().graph; }
   const std::vector<Level>& levels() const { return mLevels; }
-  /// Surface node s on the input mesh: its triangle is finest().surfaceSource[s], these its barycentrics.
-  const std::vector<glm::dvec3>& sourceBarycentrics() const { return mBary; }
+  /// Whether the finest level's surface is the input mesh (not decimated).
+  bool finestIsInput() const { return mFinestIsInput; }
+  /// Triangles of the finest level's surface.
+  std::size_t surfaceTriangles() const { return mSurfaceTriangles; }
   /// The Sec. 5.3 display surface over the finest surface nodes (topology fixed; positions follow deform()).
   const quadgraph::NodeSurface& nodeSurface() const { return mNodeSurface; }
 
   /// Transmitted irradiance q at the finest surface nodes (Eq. 3), shading normals from the input mesh.
+  /// A decimated surface's node takes the area-weighted mean over the input triangles nearest to it
+  /// (the power arriving is kept), or Eq. 10's weights from the nearest triangles where none is.
   std::vector<glm::dvec3> irradiance(const scene::TriangleMesh& mesh, const std::vector<glm::vec3>& vertexNormals,
                                      const std::vector<scene::Light>& lights, const scene::RayCaster& caster,
                                      double eta) const;
@@ -73,18 +82,33 @@ class QuadGraphPipeline {
   /// barycentrics stay. The identity map restores the built shape.
   void deform(const std::function<glm::dvec3(const glm::dvec3&)>& map);
 
+  /// Values at the finest surface nodes spread to the input mesh's vertices: by source triangle and
+  /// barycentrics when the surface is the input, else by Eq. 10's weights from the 4 nearest nodes.
+  std::vector<double> toInputVertices(const scene::TriangleMesh& mesh, const std::vector<double>& nodeValues) const;
+
   /// Bytes one solve reads per iteration over all levels (neighbours, weights, diagonal, rhs, two buffers).
   double solverBytes() const;
 
  private:
   void computeTransfers();
+  void mapInputMesh(const scene::TriangleMesh& mesh);
+  std::vector<glm::dvec3> irradianceOnInput(const scene::TriangleMesh& mesh,
+                                            const std::vector<glm::vec3>& vertexNormals,
+                                            const std::vector<scene::Light>& lights,
+                                            const scene::RayCaster& caster,
+                                            const scene::IrradianceSettings& settings) const;
 
   QuadGraphOptions mOptions;
   std::vector<Level> mLevels;  ///< coarsest first
   std::vector<std::vector<glm::dvec3>> mRestVertices;  ///< per level: the tet vertices as built
   std::vector<quadgraph::LevelTransfer> mTransfers;
   std::vector<quadgraph::ShepardWeights> mRestrictQ;  ///< finest surface nodes -> level h's
-  std::vector<glm::dvec3> mBary;
+  std::vector<glm::dvec3> mBary;  ///< finest surface node s on its source triangle (a surface that is the input)
+  bool mFinestIsInput = true;
+  std::size_t mSurfaceTriangles = 0;
+  std::vector<std::uint32_t> mTriangleNode;     ///< decimated: each input triangle's nearest surface node
+  quadgraph::ShepardWeights mNodeFromTriangles;  ///< decimated: for a node no triangle is nearest to
+  quadgraph::ShepardWeights mVertexFromNodes;    ///< decimated: input vertices from the surface nodes
   quadgraph::NodeSurface mNodeSurface;
 };
 

@@ -3,7 +3,6 @@
 /// solve and Eq. 7, mapped to the requested points or shown on the Sec. 5.3 triangulation of the
 /// surface nodes. An adapter (it links the AGPL TetGen target and VTK for the .vtu export),
 /// registered by app_registry.cpp.
-#include <lucent/quadgraph/surface_mapping.hpp>
 #include <lucent/reference/vertex_radiosity.hpp>
 #include <lucent/technique/technique.hpp>
 #include <lucent/technique/validity.hpp>
@@ -16,8 +15,20 @@ namespace lucent::technique {
 
 namespace {
 
-render::QuadGraphOptions pipelineOptions(const KnobValues& knobs) {
+/// The finest surface's triangle budget: the knob, but never so few that the mean edge exceeds one
+/// diffusion length of the material (a regular triangle of edge l has area l^2 sqrt(3) / 4), which
+/// keeps a decimated surface inside the technique's valid range (edges of at most 2 lengths).
+std::size_t surfaceTriangles(const SceneDescription& scene, const KnobValues& knobs) {
+  const auto budget = std::size_t(knobs.integer("surface-triangles"));
+  if (budget == 0) return 0;
+  const double length = opticalScales(scene.medium.material).shortestDiffusionLength;
+  const double needed = scene.mesh.surfaceArea() / (length * length * std::sqrt(3.0) / 4);
+  return std::isfinite(needed) ? std::max(budget, std::size_t(std::min(needed, 1e9))) : budget;
+}
+
+render::QuadGraphOptions pipelineOptions(const SceneDescription& scene, const KnobValues& knobs) {
   render::QuadGraphOptions o;
+  o.surfaceTriangles = surfaceTriangles(scene, knobs);
   o.levels = int(knobs.integer("levels"));
   o.gradingK = knobs.real("K");
   o.quality = knobs.real("quality");
@@ -87,7 +98,7 @@ class QuadGraphTechnique final : public Prepared {
  public:
   QuadGraphTechnique(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats)
       : Prepared(knobs), mPipeline(stats.timePrepare("graph", [&] {
-          return render::QuadGraphPipeline(scene.mesh, scene.meshName, pipelineOptions(knobs),
+          return render::QuadGraphPipeline(scene.mesh, scene.meshName, pipelineOptions(scene, knobs),
                                            stats.warnings, bool(scene.progress));
         })) {
     const quadgraph::QuadGraph& fine = mPipeline.finest();
@@ -99,6 +110,7 @@ class QuadGraphTechnique final : public Prepared {
     stats.figures["surface_nodes"] = double(fine.surfaceCount());
     stats.figures["inner_nodes"] = double(fine.innerCount());
     stats.figures["tets"] = double(mPipeline.levels().back().tets);
+    stats.figures["graph_surface_triangles"] = double(mPipeline.surfaceTriangles());
     stats.figures["solver_bytes"] = mPipeline.solverBytes();
   }
 
@@ -137,8 +149,7 @@ class QuadGraphTechnique final : public Prepared {
     for (int c = 0; c < 3; ++c) {
       std::vector<double> values(frame.radiosity.size());
       for (std::size_t s = 0; s < values.size(); ++s) values[s] = frame.radiosity[s][c];
-      const auto v = quadgraph::nodesToVertices(mPipeline.finest(), scene.mesh,
-                                                mPipeline.sourceBarycentrics(), values);
+      const auto v = mPipeline.toInputVertices(scene.mesh, values);
       for (std::size_t i = 0; i < v.size(); ++i) vertexB[i][c] = v[i];
     }
     std::vector<glm::dvec3> b(request.points.size());
@@ -197,6 +208,13 @@ Technique quadgraphTechnique() {
       KnobSpec::real(
           "K", "1", 0, 100, "",
           "tet size growth with depth: h(x) = h_surface + K * distance to the surface (Sec. 4.1)",
+          P),
+      KnobSpec::integer(
+          "surface-triangles", 20000, 0, 100000000,
+          "the finest graph's surface: the mesh decimated to this many triangles (VTK's quadric "
+          "decimation; never coarser than one diffusion length per edge), irradiance and exitance "
+          "passed between it and the mesh; 0 = the mesh as it is (contoured meshes' sliver "
+          "triangles make TetGen slow)",
           P),
       KnobSpec::integer(
           "levels", 2, 1, 6,

@@ -87,11 +87,17 @@ scene::TetMesh convert(const tetgenio& out) {
   for (int i = 0; i < out.numberofpoints; ++i)
     tets.positions[std::size_t(i)] = {out.pointlist[3 * i], out.pointlist[3 * i + 1], out.pointlist[3 * i + 2]};
   tets.tets.reserve(std::size_t(out.numberoftetrahedra));
+  double signedTotal = 0;
   for (int t = 0; t < out.numberoftetrahedra; ++t) {
     const int* c = out.tetrahedronlist + std::size_t(t) * std::size_t(out.numberofcorners);
     tets.tets.push_back({unsigned(c[0]), unsigned(c[1]), unsigned(c[2]), unsigned(c[3])});
-    if (tets.volume(tets.tets.size() - 1) < 0) std::swap(tets.tets.back().z, tets.tets.back().w);
+    signedTotal += tets.volume(tets.tets.size() - 1);
   }
+  // TetGen orients every tet alike (by exact predicates); one flip for all keeps that orientation for
+  // slivers whose volume rounds to zero or below in double (genus7 at 20 mm had one: a per-tet sign
+  // test could turn such a sliver inside out).
+  if (signedTotal < 0)
+    for (glm::uvec4& t : tets.tets) std::swap(t.z, t.w);
   for (int f = 0; f < out.numberoftrifaces; ++f) {
     const int marker = out.trifacemarkerlist ? out.trifacemarkerlist[f] : 0;
     if (marker <= 0) continue;  // an inner face TetGen listed (none without -f), or no source
@@ -154,10 +160,33 @@ void setPoints(tetgenio& in, const std::vector<Point>& points) {
     for (int k = 0; k < 3; ++k) in.pointlist[3 * i + std::size_t(k)] = points[i][k];
 }
 
+double shortestEdge(const scene::TriangleMesh& surface) {
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const auto& t : surface.triangles)
+    for (int k = 0; k < 3; ++k)
+      if (const double e = glm::distance(glm::dvec3(surface.positions[t[k]]), glm::dvec3(surface.positions[t[(k + 1) % 3]]));
+          e > 0)
+        shortest = std::min(shortest, e);
+  return shortest;
+}
+
+/// Whether some tet is far smaller than anything K asks for (all its edges below `length`).
+bool hasSpecks(const scene::TetMesh& m, double length) {
+  for (const auto& t : m.tets) {
+    double longest = 0;
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) longest = std::max(longest, glm::distance(m.positions[t[a]], m.positions[t[b]]));
+    if (longest < length) return true;
+  }
+  return false;
+}
+
 /// TetGen's refine mode (-r) with a volume target per tet from targetEdgeLength (a regular tet of edge h
 /// has volume h^3 / (6 sqrt 2)). The Steiner budget is twice the point count the targets ask for, so a
-/// surface TetGen cannot satisfy (e.g. tiny contour triangles under -Y) stops early instead of hanging.
-scene::TetMesh refineToSize(const scene::TetMesh& mesh, const TetOptions& options, std::size_t* budget) {
+/// surface TetGen cannot satisfy stops early instead of hanging. `keepSurface` (-Y): no surface face is
+/// split; without it, pieces keep their source triangle.
+scene::TetMesh refineToSize(const scene::TetMesh& mesh, const TetOptions& options, bool keepSurface,
+                            std::size_t* budget) {
   const std::vector<double> target = targetEdgeLength(mesh, options.gradingK);
   tetgenio in, out;
   in.firstnumber = 0;
@@ -185,7 +214,7 @@ scene::TetMesh refineToSize(const scene::TetMesh& mesh, const TetOptions& option
                                                     std::size_t(2 * wantedTets / 6) + 1000);
   if (budget) *budget = steiner;
   std::string s = "rzQq" + std::to_string(options.radiusEdgeRatio) + "a";
-  if (options.preserveSurface) s += "Y";
+  if (keepSurface) s += "Y";
   s += "S" + std::to_string(steiner);
   run(s, in, out);
   return convert(out);
@@ -243,8 +272,18 @@ scene::TetMesh tetrahedralize(const scene::TriangleMesh& surface, const TetOptio
   if (options.gradingK >= 0) {
     std::size_t budget = 0;
     const std::size_t before = tets.positions.size();
-    tets = refineToSize(tets, options, &budget);
-    if (report) report->steinerBudget = budget, report->steinerUsed = tets.positions.size() - before;
+    scene::TetMesh graded = refineToSize(tets, options, options.preserveSurface, &budget);
+    // With -Y, TetGen cannot split a surface face a new point encroaches; near small surface angles it
+    // then clusters points within 1e-10 mm of each other until the budget is spent (genus7 at 20 mm:
+    // 60 % of the tets without volume), sometimes within the budget. Such a surface is refined again
+    // with its faces split.
+    const bool clustered = options.preserveSurface && (graded.positions.size() - before >= budget ||
+                                                       hasSpecks(graded, 1e-3 * shortestEdge(surface)));
+    if (clustered) graded = refineToSize(tets, options, false, &budget);
+    if (report)
+      report->steinerBudget = budget, report->steinerUsed = graded.positions.size() - before,
+      report->surfaceSplit = clustered;
+    tets = std::move(graded);
   }
   return tets;
 }

@@ -13,7 +13,9 @@ struct TetOptions {
   double radiusEdgeRatio = 2.0;     ///< TetGen -q: quality bound (smaller = rounder tets, more of them)
   double maxVolume = 0;             ///< TetGen -a: target largest tet volume in mm^3 (0 = none); TetGen may exceed it
                                     ///< slightly, and with preserveSurface by more at the surface
-  bool preserveSurface = true;      ///< TetGen -Y: no Steiner points on the surface (faces stay the input's)
+  /// TetGen -Y: no Steiner points on the surface (faces stay the input's). K's grading pass splits them
+  /// (each piece keeps its source triangle) where keeping them spent its budget (TetReport::surfaceSplit).
+  bool preserveSurface = true;
   long maxSteinerPoints = 2000000;  ///< TetGen -S: bounds TetGen's effort, so bad input cannot run forever
   /// The QuadGraph paper's K (Sec. 4.1, after Alliez et al. 2005): target edge length h(x) = h_s + K d(x),
   /// h_s the mean surface edge, d the distance to the surface. Small K: inner tets close to surface size
@@ -25,6 +27,7 @@ struct TetOptions {
 /// budget, the sizes are not met everywhere; seen on contoured surfaces with tiny triangles).
 struct TetReport {
   std::size_t steinerBudget = 0, steinerUsed = 0;
+  bool surfaceSplit = false;  ///< the grading split surface faces (preserving them had spent the budget)
   bool budgetLimited() const { return steinerBudget > 0 && steinerUsed >= steinerBudget; }
 };
 

@@ -403,3 +403,42 @@ TEST_CASE(
   g.deform(moved);
   CHECK(volumeOf(surface.mesh(g)) == doctest::Approx(2 * volume).epsilon(1e-9));
 }
+
+namespace {
+/// A bipyramid over the unit square ABCD (apexes E above, F below) whose two halves split the square
+/// along different diagonals, so the flat tet ABCD (zero volume) fills the seam: a sliver as a mesher
+/// with exact predicates may leave it. The eight outer faces are the boundary.
+scene::TetMesh bipyramidWithFlatTet() {
+  scene::TetMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 1}, {0.5, 0.5, -1}};
+  enum { A, B, C, D, E, F };
+  // ABDC: the orientation of the sliver with A and C lifted by any epsilon (the seam's top diagonal
+  // AC above BD), as exact predicates orient it; its faces then point to the neighbours across them.
+  m.tets = {{A, B, C, E}, {A, C, D, E}, {A, B, D, F}, {B, C, D, F}, {A, B, D, C}};
+  for (std::size_t t = 0; t + 1 < m.tets.size(); ++t)
+    if (m.volume(t) < 0) std::swap(m.tets[t].z, m.tets[t].w);
+  m.boundaryFaces = {{A, B, E}, {B, C, E}, {C, D, E}, {D, A, E},
+                     {A, B, F}, {B, C, F}, {C, D, F}, {D, A, F}};
+  for (std::uint32_t f = 0; f < 8; ++f) m.boundarySource.push_back(f);
+  return m;
+}
+}  // namespace
+
+TEST_CASE(
+    "A flat sliver is a node of no volume between its neighbours, the solve stays finite, and an "
+    "inside-out tet is refused") {
+  scene::TetMesh mesh = bipyramidWithFlatTet();
+  CHECK(mesh.volume(4) == 0);
+  CHECK_FALSE(mesh.inverted(4));
+  const auto g = quadgraph::buildQuadGraph(mesh);
+  CHECK(g.innerCount() > 5);  // boundary tets split around their centroids (Fig. 4)
+  CHECK(*std::min_element(g.cellVolume.begin(), g.cellVolume.end()) == 0);
+  const auto sys = quadgraph::assemble(g, homogeneous(g, 0.1, 1.0), 1.3);
+  const std::vector<double> q(g.surfaceCount(), 1.0);
+  const auto phi = solveTight(sys, sys.rhs(q));
+  for (double v : phi) CHECK((std::isfinite(v) && v > 0));
+
+  std::swap(mesh.tets[0].z, mesh.tets[0].w);  // a tet of volume -1/6 mm^3
+  CHECK(mesh.inverted(0));
+  CHECK_THROWS_WITH(quadgraph::buildQuadGraph(mesh), doctest::Contains("inside out"));
+}

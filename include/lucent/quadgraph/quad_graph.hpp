@@ -103,8 +103,10 @@ struct QuadGraph {
     for (std::size_t i = 0; i < ni; ++i) {
       positions[i] = innerPosition(i);
       const glm::uvec4 c = cells[i];
-      cellVolume[i] = glm::dot(vertices[c.y] - vertices[c.x],
-                               glm::cross(vertices[c.z] - vertices[c.x], vertices[c.w] - vertices[c.x])) / 6.0;
+      // A flat sliver's rounding (-1e-19) is no volume: it absorbs nothing, its faces still carry flux.
+      cellVolume[i] = std::max(0.0, glm::dot(vertices[c.y] - vertices[c.x],
+                                             glm::cross(vertices[c.z] - vertices[c.x], vertices[c.w] - vertices[c.x])) /
+                                        6.0);
     }
     for (std::size_t s = 0; s < surfaceCount(); ++s) positions[ni + s] = surfacePosition(s);
     for (std::size_t i = 0; i < ni; ++i)
@@ -172,15 +174,16 @@ inline std::vector<std::array<std::uint32_t, 4>> faceAdjacency(const std::vector
 inline void projectSurfaceNodes(QuadGraph& g);
 
 /// Builds the graph with every node at its cell's centroid (relax() moves them).
-/// Throws std::invalid_argument for an empty or non-manifold tet mesh, or degenerate (zero-volume) tets.
+/// Throws std::invalid_argument for an empty or non-manifold tet mesh, or an inside-out tet (a flat sliver
+/// is kept: a node of no volume between its neighbours).
 inline QuadGraph buildQuadGraph(const scene::TetMesh& mesh) {
   if (mesh.tets.empty()) throw std::invalid_argument("QuadGraph: the tet mesh is empty");
   QuadGraph g;
   g.vertices = mesh.positions;
   g.inputVertexCount = mesh.positions.size();
   for (std::size_t t = 0; t < mesh.tets.size(); ++t)
-    if (!(mesh.volume(t) > 0))
-      throw std::invalid_argument("QuadGraph: tet " + std::to_string(t) + " has zero or negative volume");
+    if (mesh.inverted(t))
+      throw std::invalid_argument("QuadGraph: tet " + std::to_string(t) + " is inside out (negative volume)");
 
   // Fig. 4: a tet with 2-4 boundary faces becomes four tets around its centroid, each holding one face.
   const auto across = detail::faceAdjacency(mesh.tets);

@@ -1,6 +1,8 @@
 #pragma once
 /// @file tet_mesh.hpp
 /// @brief A tetrahedral mesh (mm), as the QuadGraph diffusion solver consumes it.
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -12,7 +14,7 @@ namespace lucent::scene {
 
 struct TetMesh {
   std::vector<glm::dvec3> positions;
-  std::vector<glm::uvec4> tets;  ///< positively oriented: volume() > 0
+  std::vector<glm::uvec4> tets;  ///< positively oriented: volume() > 0, or flat() for a sliver
   /// The boundary faces (vertex triples) and, for each, the input surface triangle it lies on. A boundary
   /// face equals its source triangle when the surface was preserved, and is a piece of it otherwise.
   std::vector<glm::uvec3> boundaryFaces;
@@ -22,6 +24,18 @@ struct TetMesh {
     const glm::dvec3 a = positions[tets[t].x], b = positions[tets[t].y], c = positions[tets[t].z], d = positions[tets[t].w];
     return glm::dot(b - a, glm::cross(c - a, d - a)) / 6.0;
   }
+  /// Inside out: a volume below zero by more than double rounding of the tet's size. A tet within that
+  /// rounding is a sliver a mesher's exact predicates oriented; its computed volume may be 0 or -1e-19.
+  bool inverted(std::size_t t) const {
+    double longest = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        longest = std::max(longest, glm::length(positions[tets[t][i]] - positions[tets[t][j]]));
+    const double v = volume(t);
+    return !std::isfinite(v) || v < -kFlatVolume * longest * longest * longest;
+  }
+  /// Relative volume (to the longest edge cubed) under which a tet counts as flat, not inverted.
+  static constexpr double kFlatVolume = 1e-12;
   double totalVolume() const {
     double v = 0;
     for (std::size_t t = 0; t < tets.size(); ++t) v += volume(t);

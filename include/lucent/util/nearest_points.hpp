@@ -54,8 +54,13 @@ class NearestPoints {
               best.push_back({i, glm::dot(d, d)});
             }
           }
-      std::sort(best.begin(), best.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
-      if (best.size() > k) best.resize(k);
+      const auto closer = [](const auto& a, const auto& b) { return a.second < b.second; };
+      // Keep the k nearest in linear time, then order them (surface points crowd a volume grid's cells).
+      if (best.size() > k) {
+        std::nth_element(best.begin(), best.begin() + std::ptrdiff_t(k - 1), best.end(), closer);
+        best.resize(k);
+      }
+      std::sort(best.begin(), best.end(), closer);
       // Every point outside the cube is at least `ring * mCell` away from p (p lies inside cell c).
       const double covered = double(ring) * mCell;
       const bool allCells = ring >= std::max({mDims.x, mDims.y, mDims.z});
