@@ -46,6 +46,10 @@ std::vector<KnobSpec> prtKnobs() {
                      "hierarchy bound: a node is one source when area / distance^2 < epsilon "
                      "(0: every sample)",
                      Phase::Prepare),
+      KnobSpec::real("reach", "0.999", 0.9, 1, "",
+                     "a vertex gathers R_d within the radius where this fraction of each "
+                     "channel's light leaves (1: the whole surface)",
+                     Phase::Prepare),
       KnobSpec::integer("vertex-terms", 768, 0, 24576,
                         "wavelet terms kept per vertex transport vector (0: all)", Phase::Prepare),
       KnobSpec::integer("light-terms", 256, 0, 24576,
@@ -71,11 +75,11 @@ std::vector<KnobSpec> prtKnobs() {
                         Phase::Prepare),
       KnobSpec::integer("phase-cube", 8, 2, 16,
                         "phase table's cube, texels across (the paper's 16)", Phase::Prepare),
-      KnobSpec::integer("single-cube", 8, 2, 64,
+      KnobSpec::integer("single-cube", 4, 2, 64,
                         "single scattering: its transport's cube, texels across (a power of two "
                         "up to cube; spread onto cube)",
                         Phase::Prepare),
-      KnobSpec::integer("single-samples", 8, 1, 256,
+      KnobSpec::integer("single-samples", 4, 1, 256,
                         "single scattering: deterministic depths along -n", Phase::Prepare),
       detail::profileKnob(Phase::Prepare)};
 }
@@ -94,6 +98,7 @@ prt::PrtSettings prtSettings(const SceneDescription& scene, const KnobValues& kn
   s.nodeTerms = std::size_t(knobs.integer("node-terms"));
   s.vertexTerms = std::size_t(knobs.integer("vertex-terms"));
   s.epsilon = knobs.real("epsilon");
+  s.reachFraction = knobs.real("reach");
   s.single = knobs.text("single") == "on";
   s.singleSampling.envSize = s.transport.size;
   s.singleSampling.size = int(knobs.integer("single-cube"));

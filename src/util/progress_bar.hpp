@@ -38,8 +38,12 @@ class ProgressBar {
       draw(fraction, now);
     } else {
       const double elapsed = std::chrono::duration<double>(now - mStart).count();
-      std::fprintf(stderr, "%s: %d %% after %.0f s\n", mLabel.c_str(), int(fraction * 100),
-                   elapsed);
+      if (fraction > 0.01)  // what the rest will cost, at the rate so far
+        std::fprintf(stderr, "%s: %d %% after %.0f s, about %.0f s left\n", mLabel.c_str(),
+                     int(fraction * 100), elapsed, elapsed * (1 - fraction) / fraction);
+      else
+        std::fprintf(stderr, "%s: %d %% after %.0f s\n", mLabel.c_str(), int(fraction * 100),
+                     elapsed);
       std::fflush(stderr);
     }
   }

@@ -8,6 +8,7 @@
 /// (sparse_vector.hpp).
 #include <algorithm>
 #include <atomic>
+#include <limits>
 #include <cmath>
 #include <vector>
 
@@ -30,6 +31,9 @@ struct PrtSettings {
   std::size_t nodeTerms = 0;    ///< kept per hierarchy node (0: all)
   std::size_t vertexTerms = 0;  ///< kept per vertex vector (0: all)
   double epsilon = 0;           ///< the hierarchy's area / distance^2 bound
+  /// R_d's light kept per channel: a vertex gathers within the radius where this fraction of each
+  /// channel's total leaves (Profile::largestRadiusHolding); 1: the whole surface.
+  double reachFraction = 1;
   bool single = true;           ///< add the single-scattering vectors
   SingleTransportSampling singleSampling;
 };
@@ -105,6 +109,8 @@ inline void vertexTransports(const std::vector<glm::dvec3>& vertices,
               toOutside = float(1 / (s.transport.eta * s.transport.eta));
   model.diffuse.assign(vertices.size(), {});
   model.single.assign(singleTerm && !folded ? vertices.size() : 0, {});
+  const double reach = s.reachFraction < 1 ? profile.largestRadiusHolding(s.reachFraction)
+                                            : std::numeric_limits<double>::infinity();
   std::atomic<std::size_t> done{0};
   parallelFor(vertices.size(), [&](std::size_t begin, std::size_t end) {
     std::vector<glm::vec3> acc(texels);
@@ -112,7 +118,7 @@ inline void vertexTransports(const std::vector<glm::dvec3>& vertices,
     for (std::size_t v = begin; v < end; ++v) {
       std::fill(acc.begin(), acc.end(), glm::vec3(0));
       hierarchy.gather(
-          vertices[v], [&](double r) { return glm::dvec3(profile.rd(r)); }, acc);
+          vertices[v], [&](double r) { return glm::dvec3(profile.rd(r)); }, acc, reach);
       if (near)
         near->forEachNear(vertices[v], profile, [&](std::uint32_t i, const glm::dvec3& c) {
           hierarchy.addSample(i, glm::vec3(c), acc);

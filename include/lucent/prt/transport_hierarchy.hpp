@@ -11,6 +11,7 @@
 /// clustering commutes with the wavelet transform. epsilon = 0 with every term kept is the exact
 /// sum.
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -58,9 +59,11 @@ class TransportHierarchy {
   }
 
   /// Adds T(x) per channel into `accumulator` (6 faceSize^2 RGB Haar coefficients); `rd(r)` is the
-  /// profile R_d(r) per channel. Returns how many vectors it added.
+  /// profile R_d(r) per channel, taken as 0 beyond `reach` (nodes wholly farther are skipped).
+  /// Returns how many vectors it added.
   template <class Rd>
-  std::size_t gather(const glm::dvec3& x, const Rd& rd, std::vector<glm::vec3>& accumulator) const {
+  std::size_t gather(const glm::dvec3& x, const Rd& rd, std::vector<glm::vec3>& accumulator,
+                     double reach = std::numeric_limits<double>::infinity()) const {
     const auto& nodes = mTree.nodes();
     if (nodes.empty()) return 0;
     std::size_t added = 0;
@@ -70,6 +73,8 @@ class TransportHierarchy {
       stack.pop_back();
       const auto& node = nodes[index];
       const Cluster& cluster = mClusters[index];
+      const glm::dvec3 outside = glm::max(glm::max(node.lo - x, x - node.hi), glm::dvec3(0));
+      if (glm::dot(outside, outside) > reach * reach) continue;
       const glm::dvec3 d = x - cluster.centre;
       const double dist2 = glm::dot(d, d);
       if (!node.contains(x) && cluster.area < mEpsilon * dist2) {
@@ -77,7 +82,9 @@ class TransportHierarchy {
       } else if (node.leaf()) {
         for (std::uint32_t k = node.begin; k < node.end; ++k) {
           const std::uint32_t i = mTree.order()[k];
-          addScaled(mSamples[i], glm::vec3(rd(glm::length(x - mPositions[i]))), accumulator);
+          const double r = glm::length(x - mPositions[i]);
+          if (r > reach) continue;
+          addScaled(mSamples[i], glm::vec3(rd(r)), accumulator);
           ++added;
         }
       } else {
