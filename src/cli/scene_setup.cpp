@@ -12,6 +12,7 @@
 #include <lucent/scene/mesh_check.hpp>
 #include <lucent/scene/shapes.hpp>
 #include <lucent/technique/transfer_function.hpp>
+#include <lucent/technique/validity.hpp>
 #include "../io/exr_io.hpp"
 #include "../io/mesh_io.hpp"
 #include "../io/mesh_repair.hpp"
@@ -141,13 +142,13 @@ technique::Inclusion parseInclusion(const Args& args, const std::string& text, c
   inc.surface = scene::shapes::sphere(radius, 4, centre);
   for (const auto& p : inc.surface.positions)
     if (!inside(*s.caster, glm::dvec3(p), 1e-5 * bounds.diagonal()))
-      args.fail("--inclusion " + text + ": the sphere (radius " + std::to_string(radius) +
+      args.fail("--inclusion " + text + ": the sphere (radius " + technique::valueText(radius) +
                 " mm at the bounding-box centre) is not inside the object; lower the fraction or "
                 "use a shape that is "
                 "solid at its centre (e.g. --shape sphere)");
   inc.medium.material = *found;
   inc.contains = [centre, radius](const glm::dvec3& p) { return glm::length(p - centre) < radius; };
-  inc.description = found->name + " sphere of radius " + std::to_string(radius) + " mm";
+  inc.description = found->name + " sphere of radius " + technique::lengthText(radius);
   return inc;
 }
 /// The built-in shapes' names, for the help text.

@@ -7,18 +7,14 @@
 #include <string>
 
 #include <lucent/scene/voxel_grid.hpp>
+#include <lucent/util/number_text.hpp>
 
 #include "../util/error.hpp"
 
 namespace lucent::io {
 
-/// A number from a file's header as a message shows it: whole numbers in full, others (and those
-/// beyond long, which a hostile header gives) to 6 digits.
-inline std::string numberShown(double v) {
-  char b[40];
-  std::snprintf(b, sizeof b, std::fabs(v) < 1e15 && v == std::floor(v) ? "%.0f" : "%.6g", v);
-  return b;
-}
+/// A number from a file's header as a message shows it (util/number_text.hpp).
+using util::numberShown;
 
 /// Throws InputError "<subject>W x H x D voxels, more than lucent <verb> (<bound>, <GB> GB); <fix>"
 /// when dims (doubles: a hostile extent can exceed int) hold more than scene::kMaxVoxels.

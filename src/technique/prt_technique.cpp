@@ -145,7 +145,7 @@ class PrtPrepared final : public Prepared {
         scene.mesh, mfp, knobs.real("fraction"), std::size_t(knobs.integer("max-samples")));
     if (spacing.budgetLimited)
       stats.warnings.push_back("prt: sample budget reached: spacing " +
-                               std::to_string(spacing.spacing) + " mm is coarser than " +
+                               lengthText(spacing.spacing) + " is coarser than " +
                                knobs.text("fraction") + " x the mean free path; raise max-samples");
     const std::size_t sampleCount = reference::countSurfaceSamples(scene.mesh, spacing.spacing);
     checkPrecomputeBytes(sampleCount, scene.mesh.positions.size(), s,

@@ -79,7 +79,7 @@ void solveFigures(const render::QuadGraphFrame& frame, Statistics& stats) {
       if (!reports[h].converged)
         stats.warnings.push_back("quadgraph: level " + std::to_string(h) + " channel " + "RGB"[c] +
                                  " stopped at the iteration limit with residual " +
-                                 std::to_string(reports[h].relativeResidual) +
+                                 numberText(reports[h].relativeResidual) +
                                  "; raise iterations");
     }
     stats.figures[std::string("residual_") + "rgb"[c]] = reports.back().relativeResidual;

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "../optics/diffusion_boundary.hpp"
+#include "../util/number_text.hpp"
 #include "quad_graph.hpp"
 
 namespace lucent::quadgraph {
@@ -169,7 +170,7 @@ DiffusionSystem<T> assemble(const QuadGraph& g, const NodeMedium& m, double eta,
   for (std::size_t i = 0; i < n; ++i) {
     if (!(diag[i] > 0) || !std::isfinite(diag[i]))
       throw std::invalid_argument("QuadGraph assemble: row " + std::to_string(i) + " has diagonal " +
-                                  std::to_string(diag[i]) + " (degenerate geometry or medium)");
+                                  util::numberText(diag[i]) + " (degenerate geometry or medium)");
     sys.diagonal[i] = T(diag[i]);
   }
   return sys;

@@ -16,7 +16,6 @@
 #include "single_scattering_term.hpp"
 #include "technique.hpp"
 #include "validity.hpp"
-#include "validity.hpp"
 
 namespace lucent::technique {
 
@@ -86,7 +85,7 @@ class DipoleSum final : public Prepared {
       if (!(asked > 0) || !std::isfinite(asked))
         throw RequestError("technique '" + knobs.technique() +
                            "' knob fraction=" + knobs.text("fraction") + " gives a spacing of " +
-                           std::to_string(asked) + " mm; use a fraction near 0.5");
+                           valueText(asked) + " mm; use a fraction near 0.5");
       choice = reference::chooseSpacing(scene.mesh, mfp, knobs.real("fraction"),
                                         std::size_t(knobs.integer("max-samples")));
       if (choice.count > std::size_t(knobs.integer("max-samples")))  // a sample per triangle

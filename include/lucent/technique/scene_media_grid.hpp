@@ -13,6 +13,7 @@
 #include "knob.hpp"
 #include "scene.hpp"
 #include "statistics.hpp"
+#include "validity.hpp"
 
 namespace lucent::technique::detail {
 
@@ -120,8 +121,8 @@ inline void splitByField(const Medium& medium, int slots, VoxelMedia& out) {
       if (!(c.sigmaA[k] >= 0 && c.sigmaSPrime[k] >= 0 &&
             std::isfinite(c.sigmaA[k] + c.sigmaSPrime[k])))
         throw RequestError("the coefficient field of " + medium.densityDescription +
-                           " gives sigma_a " + std::to_string(c.sigmaA[k]) + ", sigma_s' " +
-                           std::to_string(c.sigmaSPrime[k]) + " at voxel " + std::to_string(i) +
+                           " gives sigma_a " + valueText(c.sigmaA[k]) + ", sigma_s' " +
+                           valueText(c.sigmaSPrime[k]) + " at voxel " + std::to_string(i) +
                            "; coefficients must be finite and >= 0");
     return c;
   };

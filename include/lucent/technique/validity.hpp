@@ -16,6 +16,7 @@
 
 #include "../optics/materials.hpp"
 #include "../scene/mesh.hpp"
+#include "../util/number_text.hpp"
 
 namespace lucent::technique {
 
@@ -44,18 +45,9 @@ inline OpticalScales opticalScales(const optics::Material& m) {
   return s;
 }
 
-inline std::string numberText(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", v);
-  return b;
-}
+using util::numberText;
+using util::valueText;
 inline std::string lengthText(double mm) { return numberText(mm) + " mm"; }
-/// A value the user gave or must give back (a threshold, a range's ends): 6 significant digits.
-inline std::string valueText(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6g", v);
-  return b;
-}
 
 namespace validity {
 
