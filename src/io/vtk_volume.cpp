@@ -134,27 +134,30 @@ scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arr
   double slope = 1, intercept = 0;  // NIfTI stores values to be rescaled
   // Every format but .vti (whose XML VTK parses and checkDeclaredExtent bounds) has its header
   // checked by lucent before VTK's reader allocates from it (volume_headers/).
-  if (folder) {
-    const DeclaredVolume declared = declaredDicomSeries(path);
+  const auto noted = [](DeclaredVolume declared) {
     for (const std::string& note : declared.notes)
       std::fprintf(stderr, "lucent: note: %s\n", note.c_str());
+    return declared;
+  };
+  if (folder) {
+    const DeclaredVolume declared = noted(declaredDicomSeries(path));
     dicom->SetDirectoryName(path.c_str());
     image = readWith(*dicom, path, &declared);
   } else if (endsWith(path, ".vti")) {
     image = readFile(*xml, path,
                      ": not a VTK XML image-data file; save the volume from ParaView as .vti");
   } else if (endsWith(path, ".vtk")) {
-    const DeclaredVolume declared = declaredLegacyVtk(path);
+    const DeclaredVolume declared = noted(declaredLegacyVtk(path));
     legacy->SetFileName(path.c_str());
     image = readWith(*legacy, path, &declared);
   } else if (endsWith(path, ".nrrd") || endsWith(path, ".nhdr")) {
-    const DeclaredVolume declared = declaredNrrd(path);
+    const DeclaredVolume declared = noted(declaredNrrd(path));
     image = readFile(*nrrd, path, unreadable("NRRD"), &declared);
   } else if (endsWith(path, ".mha") || endsWith(path, ".mhd")) {
-    const DeclaredVolume declared = declaredMetaImage(path);
+    const DeclaredVolume declared = noted(declaredMetaImage(path));
     image = readFile(*meta, path, unreadable("MetaImage"), &declared);
   } else if (endsWith(path, ".nii") || endsWith(path, ".nii.gz")) {
-    const DeclaredVolume declared = declaredNifti(path);
+    const DeclaredVolume declared = noted(declaredNifti(path));
     image = readFile(*nifti, path, unreadable("NIfTI"), &declared);
     if (nifti->GetRescaleSlope() != 0) {  // NIfTI-1: scl_slope 0 means no scaling at all
       slope = nifti->GetRescaleSlope();
@@ -162,6 +165,12 @@ scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arr
     }
   } else {
     throw InputError(path + ": unknown volume format; give " + kFormats);
+  }
+  if (image) {  // a negative size (NIfTI's pixdim) is read as its magnitude, as the header check
+                // noted
+    double spacing[3];
+    image->GetSpacing(spacing);
+    image->SetSpacing(std::fabs(spacing[0]), std::fabs(spacing[1]), std::fabs(spacing[2]));
   }
   int dims[3] = {0, 0, 0};
   if (image) image->GetDimensions(dims);

@@ -146,11 +146,11 @@ const std::vector<ProbeCase> kProbeCases = {
                    kBall);
      },
      "'CompressedDataSize = 99999999999'"},
-    {"MetaImage negative spacing",
+    {"MetaImage zero spacing (VTK reads 0: a flat volume; a negative one is read as its magnitude)",
      [](auto& d) {
-       return meta(d, kMeta + "NDims = 3\nDimSize = 16 16 16\nElementSpacing = 1 -1 1\n", kBall);
+       return meta(d, kMeta + "NDims = 3\nDimSize = 16 16 16\nElementSpacing = 1 0 1\n", kBall);
      },
-     "spacing along y is -1"},
+     "spacing along y is 0"},
     {"MetaImage 500^3 floats in 16 KB",
      [](auto& d) {
        return meta(d, "ElementType = MET_FLOAT\nNDims = 3\nDimSize = 500 500 500\n",
@@ -360,4 +360,40 @@ TEST_CASE(
   INFO(r.err);
   CHECK(r.code == 0);
   CHECK(contains(r.err, "slice109.dcm is not a DICOM file; VTK's reader skips it"));
+}
+
+TEST_CASE(
+    "Spacings real files carry: NIfTI pixdim 0 (unknown) read as 1 mm and a negative pixdim as "
+    "its magnitude, MetaImage negative spacing as VTK reads it, each with a note") {
+  const auto niftiWithPixdim = [](const TempDir& d, float x, float y, float z) {
+    std::string h = niftiHeader(16, 16, 16);
+    const float pixdim[3] = {x, y, z};
+    std::memcpy(&h[80], pixdim, sizeof pixdim);  // pixdim[1..3]
+    writeFile(d / "v.nii", h + kBall);
+    return d / "v.nii";
+  };
+  {
+    TempDir dir;
+    const auto grid = lucent::io::readImageVolume(niftiWithPixdim(dir, 0, 0, 0));
+    CHECK(grid.spacing == glm::dvec3(1, 1, 1));
+  }
+  {
+    TempDir dir;
+    const auto grid = lucent::io::readImageVolume(niftiWithPixdim(dir, -0.5, 0.5, 2));
+    CHECK(grid.spacing == glm::dvec3(0.5, 0.5, 2));
+  }
+  {
+    TempDir dir;
+    const auto grid = lucent::io::readImageVolume(
+        meta(dir, kMeta + "NDims = 3\nDimSize = 16 16 16\nElementSpacing = 1 -2 1\n", kBall));
+    CHECK(grid.spacing == glm::dvec3(1, 2, 1));
+  }
+  TempDir dir;
+  const Run r = lucentCli(
+      "render --volume " + niftiWithPixdim(dir, 0, 0, 0) +
+          " --iso 50 --method voxel-single --width 8 --height 8 --quiet --out " + dir / "o.png",
+      dir);
+  INFO(r.err);
+  CHECK(r.code == 0);
+  CHECK(contains(r.err, "pixdim[1] is 0 (unknown): read as 1 mm, as VTK does"));
 }

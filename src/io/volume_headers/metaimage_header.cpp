@@ -101,7 +101,13 @@ void metaAxes(const std::string& path, const MetaFields& f, DeclaredVolume& d) {
   auto spacing = numbers(key(f, "ElementSpacing", key(f, "ElementSize", "1 1 1")));
   if (spacing.size() != 3)
     throw InputError(path + ": ElementSpacing does not give 3 numbers; " + kMetaFix);
-  for (int a = 0; a < 3; ++a) d.dims[a] = dims[a], d.spacing[a] = spacing[a];
+  for (int a = 0; a < 3; ++a) {
+    d.dims[a] = dims[a], d.spacing[a] = std::fabs(spacing[a]);  // VTK's MetaIO reads the magnitude
+    if (spacing[a] < 0)
+      d.notes.push_back(path + ": ElementSpacing along " + "xyz"[a] + " is " +
+                        numberShown(spacing[a]) + ": read as " + numberShown(-spacing[a]) +
+                        " mm, as VTK does");
+  }
   if (!parseNumber(key(f, "ElementNumberOfChannels", "1"), d.components)) d.components = NAN;
   d.bytesPerValue = metaTypeBytes(key(f, "ElementType", ""));
   if (d.bytesPerValue == 0)

@@ -144,7 +144,20 @@ void niftiAxes(const std::string& path, const NiftiFields& f, DeclaredVolume& d)
     throw InputError(path + ": holds " + numberShown(volumes) +
                      " volumes (dim[4..7]: a time "
                      "series or vectors); lucent reads one: extract it (e.g. fslroi in out 0 1)");
-  for (int a = 0; a < 3; ++a) d.dims[a] = f.dim[1 + a], d.spacing[a] = f.pixdim[1 + a];
+  for (int a = 0; a < 3; ++a) {
+    d.dims[a] = f.dim[1 + a];
+    // Real files carry pixdim 0 (unknown) and negative sizes: VTK reads 0 as 1 mm, and the size of
+    // a negative one is its magnitude (as nibabel reads it; the direction is the qform's).
+    const double p = f.pixdim[1 + a];
+    d.spacing[a] = p == 0 ? 1.0 : std::fabs(p);
+    const std::string name = path + ": pixdim[" + std::to_string(a + 1) + "] is " + numberShown(p);
+    if (p == 0)
+      d.notes.push_back(name +
+                        " (unknown): read as 1 mm, as VTK does; --size-mm scales the object");
+    else if (p < 0)
+      d.notes.push_back(name + ": read as " + numberShown(-p) +
+                        " mm (the voxel size is its magnitude)");
+  }
   if (!niftiType(f.datatype, d.bytesPerValue, d.components))
     throw InputError(path + ": datatype " + std::to_string(f.datatype) +
                      " is not one VTK reads as real values (integers, float32/64, RGB); " +
