@@ -166,8 +166,8 @@ scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arr
   } else {
     throw InputError(path + ": unknown volume format; give " + kFormats);
   }
-  if (image) {  // a negative size (NIfTI's pixdim) is read as its magnitude, as the header check
-                // noted
+  if (image && (endsWith(path, ".nii") || endsWith(path, ".nii.gz"))) {
+    // NIfTI: a negative pixdim is read as its magnitude, as the header check noted
     double spacing[3];
     image->GetSpacing(spacing);
     image->SetSpacing(std::fabs(spacing[0]), std::fabs(spacing[1]), std::fabs(spacing[2]));

@@ -6,6 +6,7 @@
 #include <lucent/quadgraph/block_packing.hpp>
 #include <lucent/quadgraph/surface_mapping.hpp>
 #include <lucent/scene/irradiance.hpp>
+#include <lucent/util/nearest_points.hpp>
 
 #include "../io/vtk_quadgraph.hpp"
 #include "../tetgen/tetrahedralize.hpp"
@@ -17,7 +18,9 @@ namespace lucent::render {
 
 namespace {
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 std::vector<glm::dvec3> surfacePositions(const quadgraph::QuadGraph& g) {
   return {g.positions.begin() + std::ptrdiff_t(g.innerCount()), g.positions.end()};
@@ -25,60 +28,90 @@ std::vector<glm::dvec3> surfacePositions(const quadgraph::QuadGraph& g) {
 
 glm::dvec3 centroid(const scene::TriangleMesh& mesh, std::size_t t) {
   const glm::uvec3 v = mesh.triangles[t];
-  return (glm::dvec3(mesh.positions[v.x]) + glm::dvec3(mesh.positions[v.y]) + glm::dvec3(mesh.positions[v.z])) / 3.0;
+  return (glm::dvec3(mesh.positions[v.x]) + glm::dvec3(mesh.positions[v.y]) +
+          glm::dvec3(mesh.positions[v.z])) /
+         3.0;
 }
 }  // namespace
 
-QuadGraphPipeline::QuadGraphPipeline(const scene::TriangleMesh& mesh, const std::string& meshName,
-                                     const QuadGraphOptions& options, std::vector<std::string>& notes, bool progress)
-    : mOptions(options) {
+QuadGraphPipeline::Level QuadGraphPipeline::buildLevel(const scene::TriangleMesh& surface, int h,
+                                                       std::vector<std::string>& notes) const {
   tetgen::TetOptions tet;
-  tet.gradingK = options.gradingK;
-  tet.radiusEdgeRatio = options.quality;
+  tet.gradingK = mOptions.gradingK;
+  tet.radiusEdgeRatio = mOptions.quality;
+  tetgen::TetReport report;
+  const scene::TetMesh tm = tetgen::tetrahedralize(surface, tet, &report);
+  Level level;
+  level.tets = tm.tets.size();
+  if (report.budgetLimited())
+    notes.push_back(
+        "quadgraph: level " + std::to_string(h) + ": TetGen stopped at its point budget (" +
+        std::to_string(report.steinerBudget) +
+        "); the sizes K asks for are not met near the "
+        "smallest surface triangles (remesh the surface more evenly, e.g. vtkQuadricDecimation)");
+  level.graph = quadgraph::buildQuadGraph(tm);
+  if (mOptions.relaxIterations > 0) quadgraph::relax(level.graph, mOptions.relaxIterations);
+  if (mOptions.packing == "blocks") quadgraph::packBlocks(level.graph, mOptions.blockSide);
+  if (mOptions.packing == "random") quadgraph::shuffleNodes(level.graph);
+  return level;
+}
+
+QuadGraphPipeline::QuadGraphPipeline(const scene::TriangleMesh& mesh, const std::string& meshName,
+                                     const QuadGraphOptions& options,
+                                     std::vector<std::string>& notes, bool progress)
+    : mOptions(options) {
   util::ProgressBar bar("tetrahedralize + QuadGraph", progress);
   const std::size_t finestTarget = options.surfaceTriangles > 0
                                        ? std::min(options.surfaceTriangles, mesh.triangles.size())
                                        : mesh.triangles.size();
   mFinestIsInput = finestTarget == mesh.triangles.size();
   scene::TriangleMesh previous;  // the last decimated level's surface
-  for (int h = 0; h < options.levels; ++h) {
-    Level level;
-    // Each coarser level has about a quarter of the triangles (Sec. 4.3).
-    const std::size_t target = finestTarget >> (2 * h);
-    if (h > 0 && target < 64) {
-      notes.push_back("quadgraph: stopped at " + std::to_string(h) + " levels (a coarser surface would have < 64 triangles)");
-      break;
-    }
-    // Each level from the one before (a decimation of 167k contour triangles costs seconds).
-    if (!(h == 0 && mFinestIsInput)) previous = io::decimate(previous.triangles.empty() ? mesh : previous, target);
-    const scene::TriangleMesh& surface = h == 0 && mFinestIsInput ? mesh : previous;
-    if (h == 0) mSurfaceTriangles = surface.triangles.size();
-    try {
-      tetgen::TetReport report;
-      const scene::TetMesh tm = tetgen::tetrahedralize(surface, tet, &report);
-      level.tets = tm.tets.size();
-      if (report.budgetLimited())
-        notes.push_back("quadgraph: level " + std::to_string(h) + ": TetGen stopped at its point budget (" +
-                        std::to_string(report.steinerBudget) + "); the sizes K asks for are not met near the "
-                        "smallest surface triangles (remesh the surface more evenly, e.g. vtkQuadricDecimation)");
-      level.graph = quadgraph::buildQuadGraph(tm);
+  if (!mFinestIsInput) {
+    try {  // quadric decimation can make a thin part intersect itself: then the mesh as it is
+      previous = io::decimate(mesh, finestTarget);
+      mLevels.push_back(buildLevel(previous, 0, notes));
     } catch (const std::exception& e) {
-      if (h == 0) throw InputError(std::string(e.what()) + " (mesh " + meshName + ")");
-      notes.push_back("quadgraph: level " + std::to_string(h) + " dropped: its decimated surface failed (" + e.what() +
-                      "); using " + std::to_string(h) + " levels");
+      notes.push_back("quadgraph: the mesh decimated to " + std::to_string(finestTarget) +
+                      " triangles failed (" + e.what() +
+                      "); the graph is built on the mesh as it is (surface-triangles=0)");
+      mFinestIsInput = true, previous = {};
+    }
+  }
+  if (mFinestIsInput) {
+    try {
+      mLevels.push_back(buildLevel(mesh, 0, notes));
+    } catch (const std::exception& e) {
+      throw InputError(std::string(e.what()) + " (mesh " + meshName + ")");
+    }
+  }
+  mSurfaceTriangles = mFinestIsInput ? mesh.triangles.size() : previous.triangles.size();
+  bar.update(1.0 / options.levels);
+  for (int h = 1; h < options.levels; ++h) {
+    // Each coarser level has about a quarter of the triangles (Sec. 4.3), decimated from the one
+    // before (a decimation of 167k contour triangles costs seconds).
+    const std::size_t target = finestTarget >> (2 * h);
+    if (target < 64) {
+      notes.push_back("quadgraph: stopped at " + std::to_string(h) +
+                      " levels (a coarser surface would have < 64 triangles)");
       break;
     }
-    if (options.relaxIterations > 0) quadgraph::relax(level.graph, options.relaxIterations);
-    if (options.packing == "blocks") quadgraph::packBlocks(level.graph, options.blockSide);
-    if (options.packing == "random") quadgraph::shuffleNodes(level.graph);
-    mLevels.push_back(std::move(level));
+    try {
+      previous = io::decimate(previous.triangles.empty() ? mesh : previous, target);
+      mLevels.push_back(buildLevel(previous, h, notes));
+    } catch (const std::exception& e) {
+      notes.push_back("quadgraph: level " + std::to_string(h) +
+                      " dropped: its decimated surface failed (" + e.what() + "); using " +
+                      std::to_string(h) + " levels");
+      break;
+    }
     bar.update(double(h + 1) / options.levels);
   }
   bar.finish();
   std::reverse(mLevels.begin(), mLevels.end());
   for (const auto& level : mLevels)
-    mRestVertices.emplace_back(level.graph.vertices.begin(),
-                               level.graph.vertices.begin() + std::ptrdiff_t(level.graph.inputVertexCount));
+    mRestVertices.emplace_back(
+        level.graph.vertices.begin(),
+        level.graph.vertices.begin() + std::ptrdiff_t(level.graph.inputVertexCount));
   computeTransfers();
   if (mFinestIsInput)
     mBary = quadgraph::sourceBarycentrics(finest(), mesh);
@@ -87,42 +120,89 @@ QuadGraphPipeline::QuadGraphPipeline(const scene::TriangleMesh& mesh, const std:
   mNodeSurface = quadgraph::triangulateSurfaceNodes(finest());
   if (mNodeSurface.openFans > 0)
     notes.push_back("quadgraph: " + std::to_string(mNodeSurface.openFans) +
-                    " boundary vertices have an open fan of faces; the node surface (display=nodes) has holes there");
+                    " boundary vertices have an open fan of faces; the node surface "
+                    "(display=nodes) has holes there");
 }
 
 void QuadGraphPipeline::computeTransfers() {
   mTransfers.clear();
   for (std::size_t h = 0; h + 1 < mLevels.size(); ++h)
     mTransfers.push_back(quadgraph::levelTransfer(mLevels[h].graph, mLevels[h + 1].graph));
-  // Irradiance is evaluated once, at the finest surface nodes; coarser levels get it by Eq. 10's weights
-  // from there (b = 4), so shadow rays never start from a decimated surface.
+  // Irradiance is evaluated once, at the finest surface nodes; coarser levels get it by Eq. 10's
+  // weights from there (b = 4), so shadow rays never start from a decimated surface.
   mRestrictQ.assign(mLevels.size(), {});
   for (std::size_t h = 0; h + 1 < mLevels.size(); ++h)
-    mRestrictQ[h] = quadgraph::shepardWeights(surfacePositions(finest()), surfacePositions(mLevels[h].graph), 4);
+    mRestrictQ[h] = quadgraph::shepardWeights(surfacePositions(finest()),
+                                              surfacePositions(mLevels[h].graph), 4);
 }
+
+namespace {
+/// Eq. 10's weights from the up to `b` nearest surface nodes that face the way the point's normal
+/// does (among its kCandidates nearest): across a part thinner than the node spacing, the nearest
+/// node can be the other side's, which the light did not reach. The plain nearest b where none
+/// faces alike.
+quadgraph::ShepardWeights facingWeights(const util::NearestPoints& nodes,
+                                        const std::vector<glm::dvec3>& nodeNormals,
+                                        const std::vector<glm::dvec3>& points,
+                                        const std::vector<glm::dvec3>& normals, std::size_t b) {
+  constexpr std::size_t kCandidates = 8;
+  quadgraph::ShepardWeights w;
+  w.b = std::min(b, nodeNormals.size());
+  w.index.assign(points.size() * w.b, 0);
+  w.weight.assign(points.size() * w.b, 0.0);
+  util::tbbFor(points.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t p = begin; p < end; ++p) {
+      auto near = nodes.nearest(points[p], kCandidates);
+      const auto facing = std::stable_partition(near.begin(), near.end(), [&](const auto& c) {
+        return glm::dot(nodeNormals[c.first], normals[p]) > 0;
+      });
+      const std::size_t kept = std::min<std::size_t>(
+          w.b, facing == near.begin() ? near.size() : std::size_t(facing - near.begin()));
+      double sum = 0;
+      for (std::size_t k = 0; k < kept; ++k) {
+        const double wk = near[0].second <= 1e-24 ? (k == 0 ? 1.0 : 0.0) : 1.0 / near[k].second;
+        w.index[p * w.b + k] = near[k].first, w.weight[p * w.b + k] = wk, sum += wk;
+      }
+      for (std::size_t k = 0; k < kept; ++k) w.weight[p * w.b + k] /= sum;
+    }
+  });
+  return w;
+}
+}  // namespace
 
 void QuadGraphPipeline::mapInputMesh(const scene::TriangleMesh& mesh) {
-  const std::vector<glm::dvec3> nodes = surfacePositions(finest());
-  std::vector<glm::dvec3> centroids(mesh.triangles.size()), vertices(mesh.positions.begin(), mesh.positions.end());
-  for (std::size_t t = 0; t < centroids.size(); ++t) centroids[t] = centroid(mesh, t);
-  mTriangleNode = quadgraph::shepardWeights(nodes, centroids, 1).index;
-  mNodeFromTriangles = quadgraph::shepardWeights(centroids, nodes, 4);
-  mVertexFromNodes = quadgraph::shepardWeights(nodes, vertices, 4);
+  const quadgraph::QuadGraph& fine = finest();
+  std::vector<glm::dvec3> nodeNormals(fine.surfaceCount());
+  for (std::size_t s = 0; s < nodeNormals.size(); ++s) {
+    double area = 0;
+    fine.faceGeometry(fine.surfaceInner[s], int(fine.surfaceSlot[s]), nodeNormals[s], area);
+  }
+  const util::NearestPoints nodes(surfacePositions(fine));
+  std::vector<glm::dvec3> centroids(mesh.triangles.size()), faceNormals(mesh.triangles.size());
+  for (std::size_t t = 0; t < centroids.size(); ++t)
+    centroids[t] = centroid(mesh, t), faceNormals[t] = mesh.areaVector(t);
+  mTriangleNode = facingWeights(nodes, nodeNormals, centroids, faceNormals, 1).index;
+  mNodeFromTriangles = quadgraph::shepardWeights(centroids, surfacePositions(fine), 4);
+  const std::vector<glm::vec3> vertexNormals = mesh.vertexNormals();
+  mVertexFromNodes =
+      facingWeights(nodes, nodeNormals, {mesh.positions.begin(), mesh.positions.end()},
+                    {vertexNormals.begin(), vertexNormals.end()}, 4);
 }
 
-std::vector<glm::dvec3> QuadGraphPipeline::irradianceOnInput(const scene::TriangleMesh& mesh,
-                                                             const std::vector<glm::vec3>& vertexNormals,
-                                                             const std::vector<scene::Light>& lights,
-                                                             const scene::RayCaster& caster,
-                                                             const scene::IrradianceSettings& settings) const {
+std::vector<glm::dvec3> QuadGraphPipeline::irradianceOnInput(
+    const scene::TriangleMesh& mesh, const std::vector<glm::vec3>& vertexNormals,
+    const std::vector<scene::Light>& lights, const scene::RayCaster& caster,
+    const scene::IrradianceSettings& settings) const {
   std::vector<glm::dvec3> perTriangle(mesh.triangles.size());
   util::tbbFor(perTriangle.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t t = begin; t < end; ++t) {
       const auto tri = std::uint32_t(t);
-      if (!(mesh.triangleArea(tri) > 0)) continue;  // no normal, no power: a degenerate input triangle
+      if (!(mesh.triangleArea(tri) > 0))
+        continue;  // no normal, no power: a degenerate input triangle
       const glm::dvec3 faceN = glm::normalize(mesh.areaVector(tri));
       const glm::dvec3 n = scene::shadingNormal(mesh, vertexNormals, tri, glm::dvec3(1.0 / 3.0));
-      perTriangle[t] = scene::irradianceAt(centroid(mesh, t), n, faceN, lights, caster, settings, t);
+      perTriangle[t] =
+          scene::irradianceAt(centroid(mesh, t), n, faceN, lights, caster, settings, t);
     }
   });
   const std::size_t count = finest().surfaceCount();
@@ -138,13 +218,14 @@ std::vector<glm::dvec3> QuadGraphPipeline::irradianceOnInput(const scene::Triang
       power[s] /= area[s];
       continue;
     }
-    for (std::size_t k = 0; k < w.b; ++k) power[s] += w.weight[s * w.b + k] * perTriangle[w.index[s * w.b + k]];
+    for (std::size_t k = 0; k < w.b; ++k)
+      power[s] += w.weight[s * w.b + k] * perTriangle[w.index[s * w.b + k]];
   }
   return power;
 }
 
-std::vector<double> QuadGraphPipeline::toInputVertices(const scene::TriangleMesh& mesh,
-                                                       const std::vector<double>& nodeValues) const {
+std::vector<double> QuadGraphPipeline::toInputVertices(
+    const scene::TriangleMesh& mesh, const std::vector<double>& nodeValues) const {
   if (mFinestIsInput) return quadgraph::nodesToVertices(finest(), mesh, mBary, nodeValues);
   std::vector<double> out(mesh.positions.size());
   mVertexFromNodes.apply(nodeValues.data(), out.data(), out.size());
@@ -154,7 +235,8 @@ std::vector<double> QuadGraphPipeline::toInputVertices(const scene::TriangleMesh
 std::vector<glm::dvec3> QuadGraphPipeline::irradiance(const scene::TriangleMesh& mesh,
                                                       const std::vector<glm::vec3>& vertexNormals,
                                                       const std::vector<scene::Light>& lights,
-                                                      const scene::RayCaster& caster, double eta) const {
+                                                      const scene::RayCaster& caster,
+                                                      double eta) const {
   const quadgraph::QuadGraph& fine = finest();
   scene::IrradianceSettings irr;
   irr.eta = eta;
@@ -167,13 +249,15 @@ std::vector<glm::dvec3> QuadGraphPipeline::irradiance(const scene::TriangleMesh&
       const std::uint32_t tri = fine.surfaceSource[s];
       const glm::dvec3 faceN = glm::normalize(mesh.areaVector(tri));
       const glm::dvec3 n = scene::shadingNormal(mesh, vertexNormals, tri, mBary[s]);
-      q[s] = scene::irradianceAt(fine.positions[fine.innerCount() + s], n, faceN, lights, caster, irr, s);
+      q[s] = scene::irradianceAt(fine.positions[fine.innerCount() + s], n, faceN, lights, caster,
+                                 irr, s);
     }
   });
   return q;
 }
 
-QuadGraphFrame QuadGraphPipeline::solve(const std::vector<glm::dvec3>& qFine, const MediumField& medium, double eta,
+QuadGraphFrame QuadGraphPipeline::solve(const std::vector<glm::dvec3>& qFine,
+                                        const MediumField& medium, double eta,
                                         bool progress) const {
   const quadgraph::QuadGraph& fine = finest();
   QuadGraphFrame out;
@@ -188,8 +272,10 @@ QuadGraphFrame QuadGraphPipeline::solve(const std::vector<glm::dvec3>& qFine, co
     std::vector<std::vector<double>> q(mLevels.size());
     for (std::size_t h = 0; h < mLevels.size(); ++h) {
       const auto nodeMedium = quadgraph::sampleMedium(mLevels[h].graph, field);
-      systems.push_back(quadgraph::assemble<double>(mLevels[h].graph, nodeMedium, eta, mOptions.stencil));
-      if (h + 1 == mLevels.size()) out.kappa[std::size_t(c)] = nodeMedium.kappa, out.mu[std::size_t(c)] = nodeMedium.mu;
+      systems.push_back(
+          quadgraph::assemble<double>(mLevels[h].graph, nodeMedium, eta, mOptions.stencil));
+      if (h + 1 == mLevels.size())
+        out.kappa[std::size_t(c)] = nodeMedium.kappa, out.mu[std::size_t(c)] = nodeMedium.mu;
     }
     for (std::size_t h = 0; h < mLevels.size(); ++h) {
       std::vector<double> qc(fine.surfaceCount());
@@ -202,13 +288,14 @@ QuadGraphFrame QuadGraphPipeline::solve(const std::vector<glm::dvec3>& qFine, co
       q[h] = std::move(qc);
       problems[h].system = &systems[h];
       problems[h].rhs = systems[h].rhs(q[h]);
-      if (mOptions.solver == quadgraph::Solver::Sor) problems[h].colours = quadgraph::colourRows(systems[h]);
+      if (mOptions.solver == quadgraph::Solver::Sor)
+        problems[h].colours = quadgraph::colourRows(systems[h]);
     }
     out.assembleSeconds += since(ta);
     const auto ts = Clock::now();
     std::vector<double> phi;
-    out.reports[std::size_t(c)] =
-        quadgraph::solveMultiresolution(mOptions.solver, problems, mTransfers, phi, mOptions.solve, util::tbbFor);
+    out.reports[std::size_t(c)] = quadgraph::solveMultiresolution(
+        mOptions.solver, problems, mTransfers, phi, mOptions.solve, util::tbbFor);
     out.solveSeconds += since(ts);
     std::size_t clamped = 0;
     const auto b = quadgraph::surfaceRadiosity(systems.back(), phi, q.back(), &clamped);
@@ -234,7 +321,8 @@ void QuadGraphPipeline::deform(const std::function<glm::dvec3(const glm::dvec3&)
 
 double QuadGraphPipeline::solverBytes() const {
   double bytes = 0;
-  for (const auto& l : mLevels) bytes += double(l.graph.nodeCount()) * (4 * 4 + 4 * 8 + 8 + 8 + 2 * 8);
+  for (const auto& l : mLevels)
+    bytes += double(l.graph.nodeCount()) * (4 * 4 + 4 * 8 + 8 + 8 + 2 * 8);
   return bytes;
 }
 

@@ -19,8 +19,9 @@ namespace {
 /// diffusion length of the material (a regular triangle of edge l has area l^2 sqrt(3) / 4), which
 /// keeps a decimated surface inside the technique's valid range (edges of at most 2 lengths).
 std::size_t surfaceTriangles(const SceneDescription& scene, const KnobValues& knobs) {
-  const auto budget = std::size_t(knobs.integer("surface-triangles"));
-  if (budget == 0) return 0;
+  // At least the 64 triangles a coarser level keeps (multiresolution stops below them).
+  const auto budget = std::max<std::size_t>(64, std::size_t(knobs.integer("surface-triangles")));
+  if (knobs.integer("surface-triangles") == 0) return 0;
   const double length = opticalScales(scene.medium.material).shortestDiffusionLength;
   const double needed = scene.mesh.surfaceArea() / (length * length * std::sqrt(3.0) / 4);
   return std::isfinite(needed) ? std::max(budget, std::size_t(std::min(needed, 1e9))) : budget;
@@ -212,7 +213,8 @@ Technique quadgraphTechnique() {
       KnobSpec::integer(
           "surface-triangles", 20000, 0, 100000000,
           "the finest graph's surface: the mesh decimated to this many triangles (VTK's quadric "
-          "decimation; never coarser than one diffusion length per edge), irradiance and exitance "
+          "decimation; at least 64; never coarser than one diffusion length per edge), irradiance "
+          "and exitance "
           "passed between it and the mesh; 0 = the mesh as it is (contoured meshes' sliver "
           "triangles make TetGen slow)",
           P),

@@ -170,7 +170,12 @@ double shortestEdge(const scene::TriangleMesh& surface) {
   return shortest;
 }
 
-/// Whether some tet is far smaller than anything K asks for (all its edges below `length`).
+/// A tet whose every edge is below this fraction of the surface's shortest edge is a speck: no size
+/// K's grading asks for (it never asks below the surface's own edges) comes near it; the clusters
+/// TetGen left had edges of 1e-16 mm against surface edges of 1e-1 mm.
+constexpr double kSpeckFraction = 1e-3;
+
+/// Whether some tet has every edge below `length`.
 bool hasSpecks(const scene::TetMesh& m, double length) {
   for (const auto& t : m.tets) {
     double longest = 0;
@@ -277,11 +282,13 @@ scene::TetMesh tetrahedralize(const scene::TriangleMesh& surface, const TetOptio
     // then clusters points within 1e-10 mm of each other until the budget is spent (genus7 at 20 mm:
     // 60 % of the tets without volume), sometimes within the budget. Such a surface is refined again
     // with its faces split.
-    const bool clustered = options.preserveSurface && (graded.positions.size() - before >= budget ||
-                                                       hasSpecks(graded, 1e-3 * shortestEdge(surface)));
+    const std::size_t added = graded.positions.size() > before ? graded.positions.size() - before : 0;
+    const bool clustered = options.preserveSurface &&
+                           (added >= budget || hasSpecks(graded, kSpeckFraction * shortestEdge(surface)));
     if (clustered) graded = refineToSize(tets, options, false, &budget);
     if (report)
-      report->steinerBudget = budget, report->steinerUsed = graded.positions.size() - before,
+      report->steinerBudget = budget,
+      report->steinerUsed = graded.positions.size() > before ? graded.positions.size() - before : 0,
       report->surfaceSplit = clustered;
     tets = std::move(graded);
   }

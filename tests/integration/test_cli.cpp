@@ -573,14 +573,18 @@ TEST_CASE(
   CHECK((std::isfinite(g.x + g.y + g.z) && g.x > 0));
 
   // A 10 mm sphere of 20480 triangles: its graph on the mesh itself, and on 4000 triangles with
-  // irradiance and exitance passed between them (the light arriving is kept: area-weighted means).
+  // irradiance and exitance passed between them (area-weighted means, each triangle to one node).
   for (const char* budget : {"0", "4000"}) {
+    const std::string stats = dir / (std::string("s") + budget + ".json");
     const Run r = lucentCli("render --shape sphere --size-mm 10 --width 32 --height 32 --quiet "
                             "--method quadgraph --knob surface-triangles=" + std::string(budget) +
-                                " --out " + dir / (std::string("s") + budget + ".exr"),
+                                " --out " + dir / (std::string("s") + budget + ".exr") +
+                                " --stats " + stats,
                             dir);
     INFO(r.err);
     REQUIRE(r.code == 0);
+    const std::string used = std::string(budget) == "0" ? "20480" : "4000";
+    CHECK(contains(slurp(stats), "\"graph_surface_triangles\": " + used));
   }
   const glm::dvec3 full = channelSums(dir / "s0.exr"), coarse = channelSums(dir / "s4000.exr");
   for (int c = 0; c < 3; ++c) CHECK(coarse[c] == doctest::Approx(full[c]).epsilon(0.03));

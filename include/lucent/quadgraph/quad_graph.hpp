@@ -103,10 +103,12 @@ struct QuadGraph {
     for (std::size_t i = 0; i < ni; ++i) {
       positions[i] = innerPosition(i);
       const glm::uvec4 c = cells[i];
-      // A flat sliver's rounding (-1e-19) is no volume: it absorbs nothing, its faces still carry flux.
-      cellVolume[i] = std::max(0.0, glm::dot(vertices[c.y] - vertices[c.x],
-                                             glm::cross(vertices[c.z] - vertices[c.x], vertices[c.w] - vertices[c.x])) /
-                                        6.0);
+      cellVolume[i] = glm::dot(vertices[c.y] - vertices[c.x],
+                               glm::cross(vertices[c.z] - vertices[c.x], vertices[c.w] - vertices[c.x])) / 6.0;
+      // A flat sliver's rounding (-1e-19) is no volume: it absorbs nothing, its faces still carry
+      // flux. A tet turned inside out (a deformation) or NaN stays as it is, for assemble to refuse.
+      if (cellVolume[i] < 0 && cellVolume[i] >= -scene::TetMesh::flatTolerance(vertices, c))
+        cellVolume[i] = 0;
     }
     for (std::size_t s = 0; s < surfaceCount(); ++s) positions[ni + s] = surfacePosition(s);
     for (std::size_t i = 0; i < ni; ++i)

@@ -27,15 +27,19 @@ struct TetMesh {
   /// Inside out: a volume below zero by more than double rounding of the tet's size. A tet within that
   /// rounding is a sliver a mesher's exact predicates oriented; its computed volume may be 0 or -1e-19.
   bool inverted(std::size_t t) const {
-    double longest = 0;
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j)
-        longest = std::max(longest, glm::length(positions[tets[t][i]] - positions[tets[t][j]]));
     const double v = volume(t);
-    return !std::isfinite(v) || v < -kFlatVolume * longest * longest * longest;
+    return !std::isfinite(v) || v < -flatTolerance(positions, tets[t]);
   }
   /// Relative volume (to the longest edge cubed) under which a tet counts as flat, not inverted.
   static constexpr double kFlatVolume = 1e-12;
+  /// The volume a flat tet with these corners can show by rounding: kFlatVolume x its longest edge^3.
+  static double flatTolerance(const std::vector<glm::dvec3>& points, const glm::uvec4& tet) {
+    double longest = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        longest = std::max(longest, glm::length(points[tet[i]] - points[tet[j]]));
+    return kFlatVolume * longest * longest * longest;
+  }
   double totalVolume() const {
     double v = 0;
     for (std::size_t t = 0; t < tets.size(); ++t) v += volume(t);

@@ -90,8 +90,10 @@ bool nrrdHeaderLine(std::istream& in, std::string& line, const std::string& path
 NrrdFields readNrrdFields(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
-  if (!nrrdHeaderLine(in, line, path) || line.compare(0, 4, "NRRD") != 0)
+  if (!headerLine(in, line, path) || line.compare(0, 4, "NRRD") != 0)
     throw InputError(path + ": not a NRRD file (its first line is not NRRD000X); " + kNrrdFix);
+  in.seekg(0);
+  nrrdHeaderLine(in, line, path);  // the magic line as VTK sees it
   NrrdFields out;
   constexpr std::size_t kMaxLines = 4096, kMaxLine = 65536;  // real headers: tens of short lines
   while (nrrdHeaderLine(in, line, path)) {
