@@ -275,6 +275,13 @@ const std::vector<ProbeCase> kProbeCases = {
        });
      },
      "has an empty Pixel Representation tag"},
+    {"DICOM empty Columns after the pixel data (VTK's parser reads on to the end: fuzz_scan_dicom)",
+     [](auto& d) {
+       return dicom(d, 4, [](int k, std::string& s) {
+         if (k == 2) s += std::string("\x28\x00\x11\x00US\x00\x00", 8);
+       });
+     },
+     "has an empty Columns tag"},
 };
 }  // namespace
 

@@ -60,6 +60,9 @@ class DicomWalker {
     while (!mDone && mPos + 8 <= mBytes.size()) element(0, nullptr);
     if (!mDone)
       fail("has no pixel data (is it a DICOMDIR or a report?); move it out of the folder");
+    // VTK's parser reads on past the pixel data to the end of the file and hands later tags to the
+    // same callbacks (an empty Columns there crashed it: fuzz_scan_dicom): they are checked too.
+    while (mPos + 8 <= mBytes.size()) element(0, nullptr);
     return mSlice;
   }
 
@@ -100,11 +103,13 @@ class DicomWalker {
     std::size_t header = 8;
     std::uint32_t length = 0;
     const bool item = group == 0xFFFE;  // items and delimiters carry no VR
-    if (mExplicit && !item && mPos + 12 <= mBytes.size()) {
+    if (mExplicit && !item) {           // a short-form element may end the file (8 bytes, no value)
       const std::string vr = mBytes.substr(mPos + 4, 2);
       const bool longForm = vr == "OB" || vr == "OW" || vr == "OF" || vr == "SQ" || vr == "UT" ||
                             vr == "UN" || vr == "OD" || vr == "OL" || vr == "UC" || vr == "UR" ||
                             vr == "OV" || vr == "SV" || vr == "UV";
+      if (longForm && mPos + 12 > mBytes.size())
+        fail("is truncated inside its tags (re-export the series)");
       length = longForm ? u32(mPos + 8) : u16(mPos + 6);
       header = longForm ? 12 : 8;
     } else {
@@ -112,7 +117,7 @@ class DicomWalker {
     }
     mPos += header;
     checkReadByVtk(group, elem, length == 0xFFFFFFFF ? 0 : length);
-    if (group == 0x7FE0 && elem == 0x0010) return pixelData(length);
+    if (group == 0x7FE0 && elem == 0x0010) return pixelData(length, depth);
     if (length == 0xFFFFFFFF) return undefinedLength(depth);
     if (mPos + length > mBytes.size()) fail("is truncated inside its tags (re-export the series)");
     record(group, elem, mBytes.substr(mPos, length), syntax);
@@ -134,12 +139,13 @@ class DicomWalker {
         continue;
       }
       element(depth + 1, nullptr);
-      if (mDone) fail("has its pixel data inside a sequence");
     }
     fail("is truncated inside a sequence (re-export the series)");
   }
 
-  void pixelData(std::uint32_t length) {
+  void pixelData(std::uint32_t length, int depth) {
+    if (depth > 0) fail("has its pixel data inside a sequence");
+    if (mDone) fail("has a second pixel data element");
     if (length == 0xFFFFFFFF)
       fail(
           "holds encapsulated (compressed) pixel data, which VTK's DICOM reader does not read; "
@@ -148,6 +154,12 @@ class DicomWalker {
     if (double(length) >= 2147483647.0) fail("declares 2 GB or more of pixel data in one slice");
     mSlice.pixelBytesPresent = mFileSize - double(mPos);
     mDone = true;
+    const double end = double(mPos) + double(length);  // the tags after it are walked too
+    if (end < mFileSize && end > double(mBytes.size()))
+      fail("has tags after its pixel data beyond the first " +
+           numberShown(double(mBytes.size()) / (1 << 20)) +
+           " MB lucent reads of a slice");  // a 1 MB window is retried at 64 MB
+    mPos = std::min(mBytes.size(), mPos + std::size_t(length));
   }
 
   void record(std::uint16_t group, std::uint16_t elem, const std::string& value,
