@@ -159,18 +159,16 @@ scene::VoxelGrid readImageVolume(const std::string& path, const std::string& arr
   } else if (endsWith(path, ".nii") || endsWith(path, ".nii.gz")) {
     const DeclaredVolume declared = noted(declaredNifti(path));
     image = readFile(*nifti, path, unreadable("NIfTI"), &declared);
+    double spacing[3];  // a negative pixdim is read as its magnitude, as the header check noted
+    if (image) image->GetSpacing(spacing);
+    if (image)
+      image->SetSpacing(std::fabs(spacing[0]), std::fabs(spacing[1]), std::fabs(spacing[2]));
     if (nifti->GetRescaleSlope() != 0) {  // NIfTI-1: scl_slope 0 means no scaling at all
       slope = nifti->GetRescaleSlope();
       intercept = nifti->GetRescaleIntercept();
     }
   } else {
     throw InputError(path + ": unknown volume format; give " + kFormats);
-  }
-  if (image && (endsWith(path, ".nii") || endsWith(path, ".nii.gz"))) {
-    // NIfTI: a negative pixdim is read as its magnitude, as the header check noted
-    double spacing[3];
-    image->GetSpacing(spacing);
-    image->SetSpacing(std::fabs(spacing[0]), std::fabs(spacing[1]), std::fabs(spacing[2]));
   }
   int dims[3] = {0, 0, 0};
   if (image) image->GetDimensions(dims);

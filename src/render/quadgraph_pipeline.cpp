@@ -177,12 +177,13 @@ void QuadGraphPipeline::mapInputMesh(const scene::TriangleMesh& mesh) {
     double area = 0;
     fine.faceGeometry(fine.surfaceInner[s], int(fine.surfaceSlot[s]), nodeNormals[s], area);
   }
-  const util::NearestPoints nodes(surfacePositions(fine));
+  const std::vector<glm::dvec3> nodePositions = surfacePositions(fine);
+  const util::NearestPoints nodes(nodePositions);
   std::vector<glm::dvec3> centroids(mesh.triangles.size()), faceNormals(mesh.triangles.size());
   for (std::size_t t = 0; t < centroids.size(); ++t)
     centroids[t] = centroid(mesh, t), faceNormals[t] = mesh.areaVector(t);
   mTriangleNode = facingWeights(nodes, nodeNormals, centroids, faceNormals, 1).index;
-  mNodeFromTriangles = quadgraph::shepardWeights(centroids, surfacePositions(fine), 4);
+  mNodeFromTriangles = quadgraph::shepardWeights(centroids, nodePositions, 4);
   const std::vector<glm::vec3> vertexNormals = mesh.vertexNormals();
   mVertexFromNodes =
       facingWeights(nodes, nodeNormals, {mesh.positions.begin(), mesh.positions.end()},

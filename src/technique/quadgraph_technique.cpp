@@ -19,9 +19,10 @@ namespace {
 /// diffusion length of the material (a regular triangle of edge l has area l^2 sqrt(3) / 4), which
 /// keeps a decimated surface inside the technique's valid range (edges of at most 2 lengths).
 std::size_t surfaceTriangles(const SceneDescription& scene, const KnobValues& knobs) {
+  const auto asked = std::size_t(knobs.integer("surface-triangles"));
+  if (asked == 0) return 0;
   // At least the 64 triangles a coarser level keeps (multiresolution stops below them).
-  const auto budget = std::max<std::size_t>(64, std::size_t(knobs.integer("surface-triangles")));
-  if (knobs.integer("surface-triangles") == 0) return 0;
+  const std::size_t budget = std::max<std::size_t>(64, asked);
   const double length = opticalScales(scene.medium.material).shortestDiffusionLength;
   const double needed = scene.mesh.surfaceArea() / (length * length * std::sqrt(3.0) / 4);
   return std::isfinite(needed) ? std::max(budget, std::size_t(std::min(needed, 1e9))) : budget;
@@ -80,8 +81,7 @@ void solveFigures(const render::QuadGraphFrame& frame, Statistics& stats) {
       if (!reports[h].converged)
         stats.warnings.push_back("quadgraph: level " + std::to_string(h) + " channel " + "RGB"[c] +
                                  " stopped at the iteration limit with residual " +
-                                 numberText(reports[h].relativeResidual) +
-                                 "; raise iterations");
+                                 numberText(reports[h].relativeResidual) + "; raise iterations");
     }
     stats.figures[std::string("residual_") + "rgb"[c]] = reports.back().relativeResidual;
   }
@@ -99,8 +99,9 @@ class QuadGraphTechnique final : public Prepared {
  public:
   QuadGraphTechnique(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats)
       : Prepared(knobs), mPipeline(stats.timePrepare("graph", [&] {
-          return render::QuadGraphPipeline(scene.mesh, scene.meshName, pipelineOptions(scene, knobs),
-                                           stats.warnings, bool(scene.progress));
+          return render::QuadGraphPipeline(scene.mesh, scene.meshName,
+                                           pipelineOptions(scene, knobs), stats.warnings,
+                                           bool(scene.progress));
         })) {
     const quadgraph::QuadGraph& fine = mPipeline.finest();
     stats.samples = double(fine.nodeCount());

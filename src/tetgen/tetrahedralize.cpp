@@ -177,13 +177,9 @@ constexpr double kSpeckFraction = 1e-3;
 
 /// Whether some tet has every edge below `length`.
 bool hasSpecks(const scene::TetMesh& m, double length) {
-  for (const auto& t : m.tets) {
-    double longest = 0;
-    for (int a = 0; a < 4; ++a)
-      for (int b = a + 1; b < 4; ++b) longest = std::max(longest, glm::distance(m.positions[t[a]], m.positions[t[b]]));
-    if (longest < length) return true;
-  }
-  return false;
+  return std::any_of(m.tets.begin(), m.tets.end(), [&](const glm::uvec4& t) {
+    return scene::TetMesh::longestEdge(m.positions, t) < length;
+  });
 }
 
 /// TetGen's refine mode (-r) with a volume target per tet from targetEdgeLength (a regular tet of edge h
@@ -277,18 +273,20 @@ scene::TetMesh tetrahedralize(const scene::TriangleMesh& surface, const TetOptio
   if (options.gradingK >= 0) {
     std::size_t budget = 0;
     const std::size_t before = tets.positions.size();
+    const auto added = [before](const scene::TetMesh& m) {  // Steiner points of the grading pass
+      return m.positions.size() > before ? m.positions.size() - before : std::size_t(0);
+    };
     scene::TetMesh graded = refineToSize(tets, options, options.preserveSurface, &budget);
     // With -Y, TetGen cannot split a surface face a new point encroaches; near small surface angles it
     // then clusters points within 1e-10 mm of each other until the budget is spent (genus7 at 20 mm:
     // 60 % of the tets without volume), sometimes within the budget. Such a surface is refined again
     // with its faces split.
-    const std::size_t added = graded.positions.size() > before ? graded.positions.size() - before : 0;
-    const bool clustered = options.preserveSurface &&
-                           (added >= budget || hasSpecks(graded, kSpeckFraction * shortestEdge(surface)));
+    const bool clustered =
+        options.preserveSurface &&
+        (added(graded) >= budget || hasSpecks(graded, kSpeckFraction * shortestEdge(surface)));
     if (clustered) graded = refineToSize(tets, options, false, &budget);
     if (report)
-      report->steinerBudget = budget,
-      report->steinerUsed = graded.positions.size() > before ? graded.positions.size() - before : 0,
+      report->steinerBudget = budget, report->steinerUsed = added(graded),
       report->surfaceSplit = clustered;
     tets = std::move(graded);
   }

@@ -17,7 +17,10 @@ namespace lucent::util {
 class ProgressBar {
  public:
   explicit ProgressBar(std::string label, bool enabled = true)
-      : mLabel(std::move(label)), mEnabled(enabled), mTty(isatty(STDERR_FILENO)), mStart(Clock::now()) {}
+      : mLabel(std::move(label)),
+        mEnabled(enabled),
+        mTty(isatty(STDERR_FILENO)),
+        mStart(Clock::now()) {}
   ~ProgressBar() { finish(); }
 
   /// Seconds between two progress lines in a log.
@@ -38,9 +41,9 @@ class ProgressBar {
       draw(fraction, now);
     } else {
       const double elapsed = std::chrono::duration<double>(now - mStart).count();
-      if (fraction > 0.01)  // what the rest will cost, at the rate so far
+      if (fraction > kEtaFrom)
         std::fprintf(stderr, "%s: %d %% after %.0f s, about %.0f s left\n", mLabel.c_str(),
-                     int(fraction * 100), elapsed, elapsed * (1 - fraction) / fraction);
+                     int(fraction * 100), elapsed, secondsLeft(elapsed, fraction));
       else
         std::fprintf(stderr, "%s: %d %% after %.0f s\n", mLabel.c_str(), int(fraction * 100),
                      elapsed);
@@ -56,13 +59,19 @@ class ProgressBar {
 
  private:
   using Clock = std::chrono::steady_clock;
+  /// What the rest will cost at the rate so far, once past this fraction.
+  static constexpr double kEtaFrom = 0.01;
+  static double secondsLeft(double elapsed, double fraction) {
+    return elapsed * (1 - fraction) / fraction;
+  }
   void draw(double fraction, Clock::time_point now) {
     constexpr int kWidth = 30;
     const int filled = int(fraction * kWidth + 0.5);
     const double elapsed = std::chrono::duration<double>(now - mStart).count();
-    const double eta = fraction > 0.01 ? elapsed * (1 - fraction) / fraction : 0;
-    std::fprintf(stderr, "\r%-24s [%s%s] %3d%%  %.1f s left ", mLabel.c_str(), std::string(filled, '#').c_str(),
-                 std::string(kWidth - filled, '.').c_str(), int(fraction * 100), eta);
+    const double eta = fraction > kEtaFrom ? secondsLeft(elapsed, fraction) : 0;
+    std::fprintf(stderr, "\r%-24s [%s%s] %3d%%  %.1f s left ", mLabel.c_str(),
+                 std::string(filled, '#').c_str(), std::string(kWidth - filled, '.').c_str(),
+                 int(fraction * 100), eta);
     std::fflush(stderr);
   }
   std::string mLabel;

@@ -70,11 +70,10 @@ struct NrrdFields {
   double dataOffset = -1;  ///< -1: no blank line (a detached header)
 };
 
-/// One header line as VTK 9.1's parser can end it: VTK reads the header as a C string (it stops at
-/// a NUL) of at most 4 MB and repeats its last line forever when that line has no newline.
-bool nrrdHeaderLine(std::istream& in, std::string& line, const std::string& path) {
+/// A header line just read, as VTK 9.1's parser can end it: VTK reads the header as a C string (it
+/// stops at a NUL) of at most 4 MB and repeats its last line forever when that line has no newline.
+void checkVtkCanEnd(std::istream& in, const std::string& line, const std::string& path) {
   constexpr double kVtkHeaderBytes = 0x400000 - 1;
-  if (!headerLine(in, line, path)) return false;
   if (line.find('\0') != std::string::npos)
     throw InputError(path + ": the header line '" + printable(line) +
                      "' holds a NUL byte (VTK's reader would hang on it); " + kNrrdFix);
@@ -84,6 +83,11 @@ bool nrrdHeaderLine(std::istream& in, std::string& line, const std::string& path
         "' has no newline (VTK's reader would hang on it); end the header with a newline");
   if (double(in.tellg()) > kVtkHeaderBytes)
     throw InputError(path + ": the header is longer than VTK's 4 MB; " + kNrrdFix);
+}
+
+bool nrrdHeaderLine(std::istream& in, std::string& line, const std::string& path) {
+  if (!headerLine(in, line, path)) return false;
+  checkVtkCanEnd(in, line, path);
   return true;
 }
 
@@ -92,8 +96,7 @@ NrrdFields readNrrdFields(const std::string& path) {
   std::string line;
   if (!headerLine(in, line, path) || line.compare(0, 4, "NRRD") != 0)
     throw InputError(path + ": not a NRRD file (its first line is not NRRD000X); " + kNrrdFix);
-  in.seekg(0);
-  nrrdHeaderLine(in, line, path);  // the magic line as VTK sees it
+  checkVtkCanEnd(in, line, path);
   NrrdFields out;
   constexpr std::size_t kMaxLines = 4096, kMaxLine = 65536;  // real headers: tens of short lines
   while (nrrdHeaderLine(in, line, path)) {
