@@ -132,43 +132,10 @@ void QuadGraphPipeline::computeTransfers() {
   // weights from there (b = 4), so shadow rays never start from a decimated surface.
   mRestrictQ.assign(mLevels.size(), {});
   for (std::size_t h = 0; h + 1 < mLevels.size(); ++h)
-    mRestrictQ[h] = quadgraph::shepardWeights(surfacePositions(finest()),
+    mRestrictQ[h] = util::shepardWeights(surfacePositions(finest()),
                                               surfacePositions(mLevels[h].graph), 4);
 }
 
-namespace {
-/// Eq. 10's weights from the up to `b` nearest surface nodes that face the way the point's normal
-/// does (among its kCandidates nearest): across a part thinner than the node spacing, the nearest
-/// node can be the other side's, which the light did not reach. The plain nearest b where none
-/// faces alike.
-quadgraph::ShepardWeights facingWeights(const util::NearestPoints& nodes,
-                                        const std::vector<glm::dvec3>& nodeNormals,
-                                        const std::vector<glm::dvec3>& points,
-                                        const std::vector<glm::dvec3>& normals, std::size_t b) {
-  constexpr std::size_t kCandidates = 8;
-  quadgraph::ShepardWeights w;
-  w.b = std::min(b, nodeNormals.size());
-  w.index.assign(points.size() * w.b, 0);
-  w.weight.assign(points.size() * w.b, 0.0);
-  util::tbbFor(points.size(), [&](std::size_t begin, std::size_t end) {
-    for (std::size_t p = begin; p < end; ++p) {
-      auto near = nodes.nearest(points[p], kCandidates);
-      const auto facing = std::stable_partition(near.begin(), near.end(), [&](const auto& c) {
-        return glm::dot(nodeNormals[c.first], normals[p]) > 0;
-      });
-      const std::size_t kept = std::min<std::size_t>(
-          w.b, facing == near.begin() ? near.size() : std::size_t(facing - near.begin()));
-      double sum = 0;
-      for (std::size_t k = 0; k < kept; ++k) {
-        const double wk = near[0].second <= 1e-24 ? (k == 0 ? 1.0 : 0.0) : 1.0 / near[k].second;
-        w.index[p * w.b + k] = near[k].first, w.weight[p * w.b + k] = wk, sum += wk;
-      }
-      for (std::size_t k = 0; k < kept; ++k) w.weight[p * w.b + k] /= sum;
-    }
-  });
-  return w;
-}
-}  // namespace
 
 void QuadGraphPipeline::mapInputMesh(const scene::TriangleMesh& mesh) {
   const quadgraph::QuadGraph& fine = finest();
@@ -182,12 +149,13 @@ void QuadGraphPipeline::mapInputMesh(const scene::TriangleMesh& mesh) {
   std::vector<glm::dvec3> centroids(mesh.triangles.size()), faceNormals(mesh.triangles.size());
   for (std::size_t t = 0; t < centroids.size(); ++t)
     centroids[t] = centroid(mesh, t), faceNormals[t] = mesh.areaVector(t);
-  mTriangleNode = facingWeights(nodes, nodeNormals, centroids, faceNormals, 1).index;
-  mNodeFromTriangles = quadgraph::shepardWeights(centroids, nodePositions, 4);
+  mTriangleNode =
+      util::facingShepardWeights(nodes, nodeNormals, centroids, faceNormals, 1, util::tbbFor).index;
+  mNodeFromTriangles = util::shepardWeights(centroids, nodePositions, 4);
   const std::vector<glm::vec3> vertexNormals = mesh.vertexNormals();
-  mVertexFromNodes =
-      facingWeights(nodes, nodeNormals, {mesh.positions.begin(), mesh.positions.end()},
-                    {vertexNormals.begin(), vertexNormals.end()}, 4);
+  mVertexFromNodes = util::facingShepardWeights(
+      nodes, nodeNormals, {mesh.positions.begin(), mesh.positions.end()},
+      {vertexNormals.begin(), vertexNormals.end()}, 4, util::tbbFor);
 }
 
 std::vector<glm::dvec3> QuadGraphPipeline::irradianceOnInput(
@@ -213,7 +181,7 @@ std::vector<glm::dvec3> QuadGraphPipeline::irradianceOnInput(
     const double a = mesh.triangleArea(t);
     power[mTriangleNode[t]] += a * perTriangle[t], area[mTriangleNode[t]] += a;
   }
-  const quadgraph::ShepardWeights& w = mNodeFromTriangles;
+  const util::ShepardWeights& w = mNodeFromTriangles;
   for (std::size_t s = 0; s < count; ++s) {
     if (area[s] > 0) {
       power[s] /= area[s];

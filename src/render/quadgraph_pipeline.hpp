@@ -117,16 +117,16 @@ class QuadGraphPipeline {
   std::vector<Level> mLevels;                          ///< coarsest first
   std::vector<std::vector<glm::dvec3>> mRestVertices;  ///< per level: the tet vertices as built
   std::vector<quadgraph::LevelTransfer> mTransfers;
-  std::vector<quadgraph::ShepardWeights> mRestrictQ;  ///< finest surface nodes -> level h's
+  std::vector<util::ShepardWeights> mRestrictQ;  ///< finest surface nodes -> level h's
   std::vector<glm::dvec3>
       mBary;  ///< finest surface node s on its source triangle (a surface that is the input)
   bool mFinestIsInput = true;
   std::size_t mSurfaceTriangles = 0;
   std::vector<std::uint32_t>
       mTriangleNode;  ///< decimated: each input triangle's nearest surface node
-  quadgraph::ShepardWeights
+  util::ShepardWeights
       mNodeFromTriangles;                      ///< decimated: for a node no triangle is nearest to
-  quadgraph::ShepardWeights mVertexFromNodes;  ///< decimated: input vertices from the surface nodes
+  util::ShepardWeights mVertexFromNodes;  ///< decimated: input vertices from the surface nodes
   quadgraph::NodeSurface mNodeSurface;
 };
 

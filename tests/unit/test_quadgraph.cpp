@@ -297,7 +297,7 @@ TEST_CASE("Nearest points and Shepard weights (Eq. 10)") {
     REQUIRE(near.size() == 8);
     for (int k = 0; k < 8; ++k) CHECK(near[std::size_t(k)].first == d[std::size_t(k)].second);
   }
-  const auto w = quadgraph::shepardWeights(pts, {pts[5], glm::dvec3(0.3, 0.2, 0)}, 4);
+  const auto w = util::shepardWeights(pts, {pts[5], glm::dvec3(0.3, 0.2, 0)}, 4);
   CHECK(w.weight[0] == 1.0);  // a coincident point takes that value
   double sum = 0;
   for (int k = 0; k < 4; ++k) sum += w.weight[4 + std::size_t(k)];

@@ -7,53 +7,14 @@
 #include <cstdint>
 #include <vector>
 
-#include "../util/nearest_points.hpp"
+#include "../util/shepard_weights.hpp"
 #include "solvers.hpp"
 
 namespace lucent::quadgraph {
 
-/// For each target point, `b` source indices and normalised weights.
-struct ShepardWeights {
-  std::size_t b = 0;
-  std::vector<std::uint32_t> index;
-  std::vector<double> weight;
-
-  template <class T>
-  void apply(const T* source, T* target, std::size_t targetCount) const {
-    for (std::size_t t = 0; t < targetCount; ++t) {
-      double v = 0;
-      for (std::size_t k = 0; k < b; ++k) v += weight[t * b + k] * double(source[index[t * b + k]]);
-      target[t] = T(v);
-    }
-  }
-};
-
-/// Eq. 10. A target that coincides with a source takes that source's value.
-inline ShepardWeights shepardWeights(const std::vector<glm::dvec3>& sources, const std::vector<glm::dvec3>& targets,
-                                     std::size_t b) {
-  ShepardWeights w;
-  w.b = std::min(b, sources.size());
-  w.index.resize(targets.size() * w.b);
-  w.weight.resize(targets.size() * w.b);
-  const util::NearestPoints grid(sources);
-  for (std::size_t t = 0; t < targets.size(); ++t) {
-    const auto near = grid.nearest(targets[t], w.b);
-    double sum = 0;
-    const bool exact = near.front().second <= 1e-24;
-    for (std::size_t k = 0; k < w.b; ++k) {
-      const double wk = exact ? (k == 0 ? 1.0 : 0.0) : 1.0 / near[k].second;
-      w.index[t * w.b + k] = near[k].first;
-      w.weight[t * w.b + k] = wk;
-      sum += wk;
-    }
-    for (std::size_t k = 0; k < w.b; ++k) w.weight[t * w.b + k] /= sum;
-  }
-  return w;
-}
-
 /// Resampling from a coarse level to the next finer one, inner and surface nodes kept apart.
 struct LevelTransfer {
-  ShepardWeights inner, surface;
+  util::ShepardWeights inner, surface;
 };
 
 inline LevelTransfer levelTransfer(const QuadGraph& coarse, const QuadGraph& fine, std::size_t bSurface = 4,
@@ -63,8 +24,8 @@ inline LevelTransfer levelTransfer(const QuadGraph& coarse, const QuadGraph& fin
                                    surface ? g.positions.end() : g.positions.begin() + std::ptrdiff_t(g.innerCount()));
   };
   LevelTransfer t;
-  t.inner = shepardWeights(slice(coarse, false), slice(fine, false), bInner);
-  t.surface = shepardWeights(slice(coarse, true), slice(fine, true), bSurface);
+  t.inner = util::shepardWeights(slice(coarse, false), slice(fine, false), bInner);
+  t.surface = util::shepardWeights(slice(coarse, true), slice(fine, true), bSurface);
   return t;
 }
 
