@@ -31,7 +31,8 @@
 #include <vtkSuperquadricSource.h>
 #include <vtkWindowToImageFilter.h>
 
-#include <lucent/technique/core_techniques.hpp>
+#include <lucent/technique/registry.hpp>
+#include "technique/core_registry.hpp"  // the registry lucent_app compiled (a minute per unit that builds it)
 #include "scene/builtin_shapes.hpp"
 
 #include "lucentPolyDataMesh.h"
@@ -240,7 +241,7 @@ int main(int argc, char** argv) {
               lucent->GetMaterial(), o.size, o.size, o.out.c_str(), firstMs);
 
   if (o.sweep) {
-    const auto registry = lucent::technique::coreRegistry();
+    const auto registry = lucent::technique::compiledCoreRegistry();
     const lucent::technique::Technique& t = registry.get(o.technique);
     std::vector<lucent::technique::Sweep> sweeps = t.defaultSweep;
     if (!o.sweepSpec.empty()) {

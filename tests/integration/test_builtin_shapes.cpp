@@ -18,7 +18,9 @@ TEST_CASE("Every built-in shape bounds a volume and has the genus its name promi
   const std::pair<const char*, long> expected[] = {
       {"sphere", 2},      {"torus", 0}, {"double-torus", -2}, {"genus7", -12},
       {"cube-cavity", 4}, {"twirl", 2}, {"slab", 2},          {"bottle", 4}};
-  for (const auto& [name, euler] : expected) {
+  for (const auto& entry : expected) {
+    const auto& name = std::get<0>(entry);  // no structured binding: clang 14 cannot capture one
+    const auto& euler = std::get<1>(entry);
     const scene::TriangleMesh m = scene::makeBuiltinShape(name);
     const scene::MeshReport r = scene::checkMesh(m);
     INFO(name);

@@ -888,7 +888,9 @@ TEST_CASE(
       {seg + " --transfer labels:0=none,1=Skin1,1=Ketchup,2=Skin1", "label 1 is given twice"},
       {seg + " --transfer labels:0=none,2e20=Skin1,1=Skin1,2=Skin1", "is not a label"},
       {seg + " --iso 50 --transfer labels:0=none,1=Skin1,2=Ketchup", "drop --iso"}};
-  for (const auto& [volume, expected] : refused) {
+  for (const auto& entry : refused) {
+    const auto& volume = std::get<0>(entry);  // no structured binding: clang 14 cannot capture one
+    const auto& expected = std::get<1>(entry);
     const Run r = lucentCli("render --volume " + volume + " --out " + dir / "x.png", dir);
     INFO(volume << ": " << r.err);
     CHECK(r.code == 2);

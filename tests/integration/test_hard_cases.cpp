@@ -13,15 +13,14 @@
 
 #include <lucent/technique/validity.hpp>
 
+#include "cli_run.hpp"
 #include "hard_case_matrix.hpp"
 #include "technique/techniques.hpp"
 
 using namespace lucent;
 
 namespace {
-bool contains(const std::string& s, const std::string& part) {
-  return s.find(part) != std::string::npos;
-}
+using lucent::test::contains;
 
 /// The size in transport mean free paths of the most transparent scattering channel.
 double opticalSize(const test::HardCase& c) {

@@ -138,7 +138,9 @@ TEST_CASE(
   // A tilted triangle, large enough that every solution lies on it; x behind it (the inside).
   const glm::dvec3 a(-40, -30, 2), b(40, -30, -3), c(0, 50, 4);
   const glm::dvec3 n = glm::normalize(glm::cross(b - a, c - a));
-  for (auto [nIn, nOut] : {std::pair{1.3, 1.0}, std::pair{2.4, 1.0}, std::pair{1.0, 1.33}}) {
+  for (auto entry : {std::pair{1.3, 1.0}, std::pair{2.4, 1.0}, std::pair{1.0, 1.33}}) {
+    const auto nIn = std::get<0>(entry);  // no structured binding: clang 14 cannot capture one
+    const auto nOut = std::get<1>(entry);
     const reference::MediumScene scene = oneTriangle(a, b, c, nIn, nOut);
     const Plane plane{a, n, nIn, nOut};
     const glm::dvec3 centre = (a + b + c) / 3.0;
@@ -229,7 +231,9 @@ TEST_CASE(
   scene.addBody(scene::shapes::sphere(1.0, 3),
                 scene.addMedium(medium(glm::dvec3(0.1), glm::dvec3(1), 1.3)), 0);
   const raycast::EmbreeRayCaster caster(scene.mesh);
-  for (auto [gap, bound] : {std::pair{2, 0.02}, std::pair{6, 0.003}}) {
+  for (auto entry : {std::pair{2, 0.02}, std::pair{6, 0.003}}) {
+    const auto gap = std::get<0>(entry);  // no structured binding: clang 14 cannot capture one
+    const auto bound = std::get<1>(entry);
     const reference::ManifoldNextEvent search(scene, caster, gap);
     reference::ManifoldSearchStats stats;
     util::Rng rng(11);

@@ -57,7 +57,9 @@ TEST_CASE(
                        " --iso 50 --width 8 --height 8 --out " + dir / "a.png --stats " +
                        dir / "scan.raw",
                    "is read by --volume"});
-  for (const auto& [args, expected] : cases) {
+  for (const auto& entry : cases) {
+    const auto& args = std::get<0>(entry);  // no structured binding: clang 14 cannot capture one
+    const auto& expected = std::get<1>(entry);
     const Run r = lucentCli(args, dir);
     INFO(args << "\n" << r.err);
     CHECK(r.code == 2);

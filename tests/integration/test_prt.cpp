@@ -298,8 +298,10 @@ TEST_CASE(
     halfBlack.radiance[i] = glm::vec3(0);
   scene.lights = {halfBlack};
   const technique::Technique& prt = technique::appRegistry().get("prt");
-  for (const auto& [material, g] :
+  for (const auto& entry :
        {std::pair{"skin1", 0.9}, std::pair{"skin1", -0.9}, std::pair{"spectralon", 0.0}}) {
+    const auto& material = std::get<0>(entry);  // no structured binding: clang 14 cannot capture one
+    const auto& g = std::get<1>(entry);
     INFO(material << ", g = " << g);
     scene.medium.material = *optics::findMaterial(material);
     technique::Statistics stats;

@@ -25,7 +25,7 @@ using namespace lucent;
 using namespace lucent::test;
 
 namespace {
-constexpr double kRadius = 4.0;  // mm
+constexpr double kSphereRadius = 4.0;  // mm
 constexpr std::size_t kPaths = 10000;
 
 /// A sky brighter overhead, smooth (the path tracer's escaping paths converge under it).
@@ -56,7 +56,7 @@ struct TestSphere {
   std::unique_ptr<raycast::EmbreeRayCaster> caster;
   explicit TestSphere(const scene::EnvironmentLight& sky,
                       const optics::Material& material = dipoleMedium()) {
-    scene.mesh = scene::shapes::sphere(kRadius, 4);
+    scene.mesh = scene::shapes::sphere(kSphereRadius, 4);
     scene.vertexNormals = scene.mesh.vertexNormals();
     caster = std::make_unique<raycast::EmbreeRayCaster>(scene.mesh);
     scene.caster = caster.get();
@@ -95,7 +95,7 @@ Estimate traced(const TestSphere& s, reference::ScatteringOrders orders, const g
   settings.subsurfaceOnly = !reflection;
   settings.rayEpsilon = 1e-6;
   const reference::VolumePathTracer tracer(media, *s.caster, s.scene.lights, settings);
-  const scene::Ray ray{p + normal * (2 * kRadius), -normal};
+  const scene::Ray ray{p + normal * (2 * kSphereRadius), -normal};
   Estimate e = estimate(
       tracer, paths, [&](std::size_t, util::Rng&) { return ray; }, 23);
   checkClean(e.stats);
@@ -138,8 +138,10 @@ TEST_CASE(
   const std::vector<glm::dvec3> reflected = prtRadiance(s, "on", "on");
   const std::vector<glm::dvec3> truth = dipoleTruth(s);
   using Orders = reference::ScatteringOrders;
-  for (const auto& [name, direction] :
+  for (const auto& entry :
        {std::pair{"top", glm::dvec3(0, 1, 0)}, std::pair{"bottom", glm::dvec3(0, -1, 0)}}) {
+    const auto& name = std::get<0>(entry);  // no structured binding: clang 14 cannot capture one
+    const auto& direction = std::get<1>(entry);
     const std::size_t v = extremeVertex(s.scene.mesh, direction);
     const glm::dvec3 p(s.scene.mesh.positions[v]);
     const glm::dvec3 n = glm::normalize(glm::dvec3(s.scene.vertexNormals[v]));

@@ -26,11 +26,13 @@
 #include "io/exr_io.hpp"
 #include "raycast/embree_ray_caster.hpp"
 #include "technique/techniques.hpp"
+#include "cli_run.hpp"
 #include "temp_dir.hpp"
 
 namespace {
 using namespace lucent;
 namespace lt = lucent::technique;
+using lucent::test::contains;
 
 /// Radiance = `level` everywhere: what a front end shows can be checked exactly.
 technique::Technique constantTechnique() {
@@ -100,9 +102,6 @@ CliRun runCli(const std::vector<std::string>& words, const test::TempDir& dir) {
   return r;
 }
 
-bool contains(const std::string& s, const std::string& part) {
-  return s.find(part) != std::string::npos;
-}
 }  // namespace
 
 TEST_CASE(

@@ -342,7 +342,9 @@ TEST_CASE(
       {"DICOM folder", [](auto& d) { return dicom(d, 16, [](int, std::string&) {}); }},
   };
   const std::vector<std::uint16_t> ball = ballVoxels(16);  // symmetric: any axis order reads alike
-  for (const auto& [name, write] : sound) {
+  for (const auto& entry : sound) {
+    const auto& name = std::get<0>(entry);  // no structured binding: clang 14 cannot capture one
+    const auto& write = std::get<1>(entry);
     TempDir dir;
     INFO(name);
     const lucent::scene::VoxelGrid grid = lucent::io::readImageVolume(write(dir));

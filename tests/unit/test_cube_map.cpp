@@ -5,12 +5,12 @@
 #include <cmath>
 #include <random>
 
+#include <lucent/optics/constants.hpp>
 #include <lucent/scene/environment_resample.hpp>
 #include <lucent/scene/environment_sampling.hpp>
 
 namespace {
 using namespace lucent::scene;
-constexpr double kPi = 3.14159265358979323846;
 
 glm::dvec3 randomDirection(std::mt19937& rng) {
   std::normal_distribution<double> n;
@@ -25,7 +25,7 @@ EnvironmentLight latLongProbe(int width, double noise, std::uint32_t seed) {
   env.width = width, env.height = width / 2;
   for (int row = 0; row < env.height; ++row)
     for (int col = 0; col < env.width; ++col) {
-      const double theta = kPi * (row + 0.5) / env.height, phi = 2 * kPi * (col + 0.5) / env.width;
+      const double theta = lucent::optics::kPi * (row + 0.5) / env.height, phi = 2 * lucent::optics::kPi * (col + 0.5) / env.width;
       const glm::dvec3 d(std::sin(theta) * std::sin(phi), std::cos(theta),
                          -std::sin(theta) * std::cos(phi));
       const double smooth = 1 + 0.5 * d.x + 0.25 * d.y * d.y;
@@ -62,7 +62,7 @@ TEST_CASE("Cube texels' exact solid angles are positive and sum to 4 pi") {
         const double w = cube::texelSolidAngle(row, col, size);
         sum += w, smallest = std::min(smallest, w), largest = std::max(largest, w);
       }
-    CHECK(6 * sum == doctest::Approx(4 * kPi).epsilon(1e-12));
+    CHECK(6 * sum == doctest::Approx(4 * lucent::optics::kPi).epsilon(1e-12));
     CHECK(smallest > 0);
     // Corner texels are smaller than centre ones by up to 3^{3/2} (the face's 1/(1+s^2+t^2)^{3/2}).
     CHECK(largest / smallest < 5.2 + 1e-9);
@@ -162,7 +162,7 @@ TEST_CASE("Cube image layouts: every texel round-trips and the crosses' neighbou
             if (x + dx >= w || y + dy >= h) continue;
             const glm::dvec3 e = direction[std::size_t(y + dy) * w + x + dx];
             if (glm::length(e) == 0) continue;
-            CHECK(std::acos(std::min(1.0, glm::dot(d, e))) < 2.5 * (kPi / 2) / size);
+            CHECK(std::acos(std::min(1.0, glm::dot(d, e))) < 2.5 * (lucent::optics::kPi / 2) / size);
             seams += cube::facePoint(d).face != cube::facePoint(e).face;
           }
         }
@@ -190,7 +190,7 @@ TEST_CASE("The cube-map sampler's pdf is exact: E[f/pdf] is the integral of f") 
     flux += env.lookup(d).x / pdf;
     firstMoment += (1 + d.z) * env.lookup(d).y / pdf;
   }
-  CHECK(sphere / n == doctest::Approx(4 * kPi).epsilon(0.01));
+  CHECK(sphere / n == doctest::Approx(4 * lucent::optics::kPi).epsilon(0.01));
   CHECK(flux / n == doctest::Approx(integral(env).x).epsilon(0.01));
   // The same moment by quadrature over each texel's sub-grid (independent of the sampler).
   double quadrature = 0;

@@ -233,8 +233,10 @@ TEST_CASE("Every profile is finite and non-negative on the hard cases") {
   const double inf = std::numeric_limits<double>::infinity();
   for (const auto& info : kProfileModels)
     for (double eta : {1.0, 1.3, 3.0})
-      for (const auto& [sa, ss] : {std::pair{0.0, 1.0}, std::pair{1.0, 0.0}, std::pair{0.0, 0.0},
-                                   std::pair{1e-9, 1e3}, std::pair{1e3, 1e-9}}) {
+      for (const auto& coefficients : {std::pair{0.0, 1.0}, std::pair{1.0, 0.0}, std::pair{0.0, 0.0},
+                                       std::pair{1e-9, 1e3}, std::pair{1e3, 1e-9}}) {
+        // Not a structured binding: clang 14 cannot capture one (INFO's lambda).
+        const double sa = coefficients.first, ss = coefficients.second;
         const auto p = Profile<double>::make(info.model, Rgb<double>(sa), Rgb<double>(ss), eta);
         INFO(info.name << " eta " << eta << " sigma_a " << sa << " sigma_s' " << ss);
         for (double r : {0.0, 1e-30, 1e-6, 1.0, 1e6, 1e30, inf}) {
@@ -276,7 +278,9 @@ TEST_CASE(
     "Against Monte Carlo below one mean free path: beam diffusion beats the classic dipole, the "
     "better dipole beats it on multiple scattering") {
   // The low-albedo cases of the issue: skin1's blue (albedo' 0.68) and ketchup's red (0.75).
-  for (const auto& [name, c] : {std::pair{"skin1", 2}, std::pair{"ketchup", 0}}) {
+  for (const auto& channel : {std::pair{"skin1", 2}, std::pair{"ketchup", 0}}) {
+    const char* name = channel.first;  // not a structured binding: clang 14 cannot capture one
+    const int c = channel.second;
     const Material m = *findMaterial(name);
     const double st = m.sigmaA[c] + m.sigmaSPrime[c];
     lucent::reference::PencilBeamSettings s;

@@ -52,9 +52,11 @@ void checkAtlasInvariants(const scene::TriangleMesh& mesh, const atlas::TextureA
 }  // namespace
 
 TEST_CASE("Atlas of closed shapes: no texel shared, nothing outside, area ratio within the cone bound") {
-  for (const auto& [name, mesh] : {std::pair{"sphere", scene::shapes::sphere(5.0, 4)},
-                                   std::pair{"torus", scene::shapes::torus(5.0, 2.0, 64, 32)},
-                                   std::pair{"cube-cavity", scene::shapes::cubeWithCavity(0.6)}}) {
+  for (const auto& named : {std::pair{"sphere", scene::shapes::sphere(5.0, 4)},
+                             std::pair{"torus", scene::shapes::torus(5.0, 2.0, 64, 32)},
+                             std::pair{"cube-cavity", scene::shapes::cubeWithCavity(0.6)}}) {
+    const char* name = named.first;  // not a structured binding: clang 14 cannot capture one
+    const scene::TriangleMesh& mesh = named.second;
     CAPTURE(name);
     atlas::AtlasOptions o;
     o.resolution = 512;

@@ -17,7 +17,7 @@ namespace {
 double plainWindingNumber(const TriangleMesh& m, const glm::dvec3& p) {
   double sum = 0;
   for (const auto& t : m.triangles)
-    sum += detail::solidAngle(glm::dvec3(m.positions[t.x]) - p, glm::dvec3(m.positions[t.y]) - p,
+    sum += lucent::scene::detail::solidAngle(glm::dvec3(m.positions[t.x]) - p, glm::dvec3(m.positions[t.y]) - p,
                               glm::dvec3(m.positions[t.z]) - p);
   return sum / (4 * M_PI);
 }

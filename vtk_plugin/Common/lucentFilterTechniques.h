@@ -6,17 +6,16 @@
 #ifndef lucentFilterTechniques_h
 #define lucentFilterTechniques_h
 
-#include <lucent/technique/core_techniques.hpp>
-
-#include "technique/techniques.hpp"
+#include <lucent/technique/registry.hpp>
 
 namespace lucent::vtkadapter {
 
-inline technique::Registry filterTechniques() {
-  technique::Registry r = technique::coreRegistry();
-  r.add(technique::prtTechnique());
-  return r;
-}
+/// The core registry and prt. Compiled in one unit (lucentCoreRegistry.cxx): building the core
+/// registry instantiates every technique, about a minute of compiling.
+technique::Registry filterTechniques();
+
+/// The core registry alone (the GPU pass's twins).
+technique::Registry coreTechniques();
 
 }  // namespace lucent::vtkadapter
 

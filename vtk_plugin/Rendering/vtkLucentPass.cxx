@@ -34,9 +34,10 @@
 
 #include <lucent/optics/materials.hpp>
 #include <lucent/plan/calibration.hpp>
-#include <lucent/technique/core_techniques.hpp>
+#include <lucent/technique/registry.hpp>
 #include <lucent/technique/scene_fingerprint.hpp>
 
+#include "lucentFilterTechniques.h"
 #include "lucentPassDrawing.h"
 #include "lucentPassPlanner.h"
 #include "lucentPolyDataMesh.h"
@@ -61,7 +62,7 @@ int powerOfTwoAtLeast(int n) {
 namespace lt = lucent::technique;
 
 const lt::Registry& registry() {
-  static const lt::Registry r = lt::coreRegistry();
+  static const lt::Registry r = lucent::vtkadapter::coreTechniques();
   return r;
 }
 
