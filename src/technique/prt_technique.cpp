@@ -9,6 +9,8 @@
 
 #include <lucent/prt/relight.hpp>
 #include <lucent/prt/specular.hpp>
+#include <lucent/prt/thin_samples.hpp>
+#include <lucent/prt/transport_points.hpp>
 #include <lucent/technique/single_scattering_term.hpp>
 #include <lucent/technique/technique.hpp>
 #include <lucent/technique/validity.hpp>
@@ -50,6 +52,11 @@ std::vector<KnobSpec> prtKnobs() {
                      "a vertex gathers R_d within the radius where this fraction of each "
                      "channel's light leaves (1: the whole surface)",
                      Phase::Prepare),
+      KnobSpec::integer("transport-points", 4000, 0, 100000000,
+                        "vertices the transport vectors are computed at, at most (one per grid "
+                        "cell; every vertex interpolates the nearest facing ones; never sparser "
+                        "than the profile's width; 0: every vertex)",
+                        Phase::Prepare),
       KnobSpec::integer("vertex-terms", 768, 0, 24576,
                         "wavelet terms kept per vertex transport vector (0: all)", Phase::Prepare),
       KnobSpec::integer("light-terms", 256, 0, 24576,
@@ -121,8 +128,8 @@ void checkPrecomputeBytes(std::size_t samples, std::size_t vertices, const prt::
   if (bytes <= kMaxPrecomputeBytes) return;
   std::ostringstream why;
   why << "technique 'prt' would hold about " << bytes / double(1u << 30) << " GiB of transport "
-      << "vectors (" << samples << " samples, " << vertices << " vertices); lower sample-terms, "
-      << "vertex-terms, cube or max-samples";
+      << "vectors (" << samples << " samples, " << vertices << " transport points); lower "
+      << "sample-terms, vertex-terms, cube, max-samples or transport-points";
   throw RequestError(why.str());
 }
 
@@ -148,7 +155,8 @@ class PrtPrepared final : public Prepared {
                                lengthText(spacing.spacing) + " is coarser than " +
                                knobs.text("fraction") + " x the mean free path; raise max-samples");
     const std::size_t sampleCount = reference::countSurfaceSamples(scene.mesh, spacing.spacing);
-    checkPrecomputeBytes(sampleCount, scene.mesh.positions.size(), s,
+    choosePoints(scene, knobs, stats);
+    checkPrecomputeBytes(sampleCount, mPoints.vertex.size(), s,
                          s.single ? mModel.phase.terms() : 0);
     precompute(scene, s, profile, g, spacing.spacing, stats);
   }
@@ -169,8 +177,10 @@ class PrtPrepared final : public Prepared {
                               &kept);
     });
     stats.figures["light_terms_kept"] = double(kept);
-    const prt::VertexShading shading = stats.timeFrame(
-        "relight", [&] { return prt::relightVertices(mModel, light, scene.parallelFor); });
+    const prt::VertexShading shading = stats.timeFrame("relight", [&] {
+      return prt::shadingOnVertices(mPoints,
+                                    prt::relightVertices(mModel, light, scene.parallelFor));
+    });
     // The paper's specular component (Sec. 4), pre-convolved on the frame's cube.
     std::optional<prt::SpecularEnvironment> specular;
     if (mKnobs.text("specular") == "on")
@@ -186,11 +196,31 @@ class PrtPrepared final : public Prepared {
   }
 
  private:
+  /// The vertices whose transport is computed (the knob transport-points), the rest interpolated.
+  void choosePoints(const SceneDescription& scene, const KnobValues& knobs, Statistics& stats) {
+    const std::vector<glm::dvec3> positions(scene.mesh.positions.begin(),
+                                            scene.mesh.positions.end());
+    const std::vector<glm::dvec3> normals(scene.vertexNormals.begin(), scene.vertexNormals.end());
+    const double width = opticalScales(scene.medium.material).rdWidth();
+    mPoints = stats.timePrepare("transport_points", [&] {
+      return prt::chooseTransportPoints(positions, normals,
+                                        std::size_t(knobs.integer("transport-points")), width,
+                                        scene.parallelFor);
+    });
+    if (mPoints.spacingLimited)
+      stats.warnings.push_back("prt: " + std::to_string(mPoints.vertex.size()) +
+                               " transport points, more than transport-points=" +
+                               knobs.text("transport-points") + ", keep their spacing within " +
+                               "the profile's width " + lengthText(width));
+    stats.figures["transport_points"] = double(mPoints.vertex.size());
+  }
+
   void precompute(const SceneDescription& scene, const prt::PrtSettings& s,
                   const optics::Profile<double>& profile, double g, double spacing,
                   Statistics& stats) {
-    const reference::SurfaceSamples samples = stats.timePrepare(
-        "samples", [&] { return reference::buildSurfaceSamples(scene.mesh, spacing); });
+    const reference::SurfaceSamples samples = stats.timePrepare("samples", [&] {
+      return prt::thinSamples(reference::buildSurfaceSamples(scene.mesh, spacing), spacing);
+    });
     std::vector<prt::SparseScalars> transports = stats.timePrepare("irradiance_transport", [&] {
       return prt::sampleTransports(samples, *scene.caster, s, scene.parallelFor,
                                    scene.stage("irradiance transport"));
@@ -203,10 +233,13 @@ class PrtPrepared final : public Prepared {
     const reference::SingleScattering single(
         detail::singleScatteringMedium(scene.medium.material, g), kNoLights, scene.mesh,
         scene.vertexNormals, *scene.caster, reference::SingleScatteringSettings{});
-    std::vector<glm::dvec3> vertices(scene.mesh.positions.begin(), scene.mesh.positions.end());
+    std::vector<glm::dvec3> vertices;
+    std::vector<glm::vec3> normals;
+    for (std::uint32_t v : mPoints.vertex)
+      vertices.emplace_back(scene.mesh.positions[v]), normals.push_back(scene.vertexNormals[v]);
     const reference::NearField near = prt::nearField(samples, spacing);
     stats.timePrepare("vertex_transport", [&] {
-      prt::vertexTransports(vertices, scene.vertexNormals, hierarchy, profile, &near,
+      prt::vertexTransports(vertices, normals, hierarchy, profile, &near,
                             s.single ? &single : nullptr, *scene.caster, s, mModel,
                             scene.parallelFor, scene.stage("vertex transport"));
       return 0;
@@ -217,8 +250,8 @@ class PrtPrepared final : public Prepared {
     stats.figures["surface_samples"] = double(samples.size());
     stats.figures["hierarchy_nodes"] = double(hierarchy.nodeCount());
     stats.figures["hierarchy_bytes"] = double(hierarchy.bytes());
-    stats.figures["vertices"] = double(vertices.size());
-    stats.figures["bytes_per_vertex"] =
+    stats.figures["vertices"] = double(scene.mesh.positions.size());
+    stats.figures["bytes_per_point"] =
         double(mModel.bytes()) / double(std::max<std::size_t>(1, vertices.size()));
     stats.figures["phase_terms"] = double(mModel.phase.terms());
   }
@@ -254,6 +287,7 @@ class PrtPrepared final : public Prepared {
     return radiance;
   }
 
+  prt::TransportPoints mPoints;
   prt::PrtModel mModel;
 };
 
@@ -279,7 +313,8 @@ Technique prtTechnique() {
   c.precomputeScaling = "O(samples x cube texels) rays + O(vertices x visited nodes x node terms)";
   c.frameScaling = "O(vertices x vertex terms) + O(pixels)";
   t.defaultSweep = {{"light-terms", {"16", "64", "256", "1024"}}};
-  t.referenceKnobs = {{"sample-terms", "0"},
+  t.referenceKnobs = {{"transport-points", "0"},
+                      {"sample-terms", "0"},
                       {"node-terms", "0"},
                       {"vertex-terms", "0"},
                       {"light-terms", "0"},

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include <lucent/image/metrics.hpp>
 #include <lucent/scene/environment_resample.hpp>
 #include <lucent/scene/mesh_check.hpp>
 #include <lucent/scene/shapes.hpp>
@@ -588,6 +589,40 @@ TEST_CASE(
   }
   const glm::dvec3 full = channelSums(dir / "s0.exr"), coarse = channelSums(dir / "s4000.exr");
   for (int c = 0; c < 3; ++c) CHECK(coarse[c] == doctest::Approx(full[c]).epsilon(0.03));
+}
+
+TEST_CASE(
+    "render --method prt: transport at a budget of points and thinned samples carry the light of "
+    "every vertex and every triangle's sample") {
+  // A 10 mm sphere of 20480 triangles (10242 vertices) under an environment of a bright object on
+  // black (all-frequency light): every vertex's transport against 500 points' (samples thinned alike).
+  lucent::test::TempDir dir;
+  const Run sky = lucentCli("render --shape torus --method diffuse-brdf --size-mm 300 --width 64 "
+                            "--height 32 --quiet --out " + dir / "sky.exr",
+                            dir);
+  REQUIRE(sky.code == 0);
+  for (const char* budget : {"0", "500"}) {
+    const Run r = lucentCli(
+        "render --shape sphere --size-mm 10 --width 48 --height 48 --quiet --method prt --light env:" +
+            dir / "sky.exr" + " --knob cube=8 --knob single=off --knob transport-points=" + budget +
+            " --out " + dir / (std::string("p") + budget + ".exr") + " --stats " +
+            dir / (std::string("p") + budget + ".json"),
+        dir);
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+  }
+  CHECK(contains(slurp(dir / "p0.json"), "\"transport_points\": 10242"));
+  const std::string budgeted = slurp(dir / "p500.json");
+  const auto at = budgeted.find("\"transport_points\": ");
+  REQUIRE(at != std::string::npos);
+  const double points = std::stod(budgeted.substr(at + 20));
+  CHECK(points <= 500);
+  CHECK(points >= 250);
+  const lucent::image::ImageErrors e = lucent::image::compareImages(
+      lucent::io::readExr(dir / "p500.exr"), lucent::io::readExr(dir / "p0.exr"));
+  MESSAGE("500 transport points against every vertex: relative RMS ", e.relativeRms);
+  CHECK(e.relativeRms < 0.02);
+  for (int c = 0; c < 3; ++c) CHECK(e.meanRatio[c] == doctest::Approx(1).epsilon(0.01));
 }
 
 namespace {
