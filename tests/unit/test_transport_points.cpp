@@ -8,6 +8,7 @@
 #include <lucent/optics/constants.hpp>
 #include <lucent/prt/thin_samples.hpp>
 #include <lucent/prt/transport_points.hpp>
+#include <lucent/util/grid_clusters.hpp>
 
 using namespace lucent;
 
@@ -119,4 +120,11 @@ TEST_CASE("Thinned samples: one per cell and facing, on a member's position, the
   }
   // Already at the spacing: left as it is.
   CHECK(prt::thinSamples(dense, 0.05).size() == dense.size());
+}
+
+TEST_CASE("Grid clusters: a fine cell on a large object keeps far points apart (more cells than 2^20 an axis)") {
+  std::vector<glm::dvec3> positions, normals;
+  for (int i = 0; i < 50; ++i) positions.push_back(glm::dvec3(2.0 * i, 3.0 * i, 1.0 * i)), normals.push_back({0, 0, 1});
+  const util::GridClusters c = util::gridClusters(positions, normals, 1e-5);  // 10^7 cells along x
+  CHECK(c.count == positions.size());
 }

@@ -40,6 +40,24 @@ struct GridClusters {
   }
 };
 
+namespace detail {
+/// A point's cluster: its grid cell (unbounded: a fine cell on a large object has more cells along an axis
+/// than a packed key could hold) and its normal's bin.
+struct GridKey {
+  std::int64_t x, y, z;
+  int bin;
+  bool operator==(const GridKey& o) const { return x == o.x && y == o.y && z == o.z && bin == o.bin; }
+};
+struct GridKeyHash {
+  std::size_t operator()(const GridKey& k) const {
+    std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the four fields
+    for (std::uint64_t v : {std::uint64_t(k.x), std::uint64_t(k.y), std::uint64_t(k.z), std::uint64_t(k.bin)})
+      h = (h ^ v) * 1099511628211ull;
+    return std::size_t(h);
+  }
+};
+}  // namespace detail
+
 /// Clusters numbered in order of their first point.
 inline GridClusters gridClusters(const std::vector<glm::dvec3>& positions,
                                  const std::vector<glm::dvec3>& normals, double cell) {
@@ -48,14 +66,14 @@ inline GridClusters gridClusters(const std::vector<glm::dvec3>& positions,
   auto keyOf = [&](std::size_t i) {
     const glm::dvec3 a = glm::abs(normals[i]);
     const int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
-    const std::uint64_t bin = std::uint64_t(2 * axis + (normals[i][axis] < 0 ? 1 : 0));
-    const glm::dvec3 c = glm::floor((positions[i] - lo) / cell);
-    const auto part = [](double x) { return std::uint64_t(std::min(x, 1048575.0)); };  // 20 bits
-    return ((part(c.z) << 40) | (part(c.y) << 20) | part(c.x)) * 6 + bin;
+    // Beyond 2^52 cells along an axis the cell is below rounding anyway: clamped there.
+    const glm::dvec3 c = glm::min(glm::floor((positions[i] - lo) / cell), glm::dvec3(4.5e15));
+    return detail::GridKey{std::int64_t(c.x), std::int64_t(c.y), std::int64_t(c.z),
+                           2 * axis + (normals[i][axis] < 0 ? 1 : 0)};
   };
   GridClusters out;
   out.of.resize(positions.size());
-  std::unordered_map<std::uint64_t, std::uint32_t> clusterOf;
+  std::unordered_map<detail::GridKey, std::uint32_t, detail::GridKeyHash> clusterOf;
   clusterOf.reserve(positions.size());
   for (std::size_t i = 0; i < positions.size(); ++i)
     out.of[i] = clusterOf.emplace(keyOf(i), std::uint32_t(clusterOf.size())).first->second;

@@ -52,6 +52,8 @@ inline void fillShepardSlots(ShepardWeights& w, std::size_t t,
     w.index[t * w.b + k] = near[k].first, w.weight[t * w.b + k] = wk, sum += wk;
   }
   for (std::size_t k = 0; k < kept; ++k) w.weight[t * w.b + k] /= sum;
+  // Unused slots weigh 0 on the nearest source, so a non-finite value elsewhere cannot reach t.
+  for (std::size_t k = kept; k < w.b; ++k) w.index[t * w.b + k] = near[0].first;
 }
 }  // namespace detail
 
