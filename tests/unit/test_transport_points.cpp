@@ -15,11 +15,13 @@ using namespace lucent;
 namespace {
 
 /// A unit sphere's vertices on an n x 2n latitude-longitude grid, their normals outward.
-void sphere(int n, double radius, std::vector<glm::dvec3>& positions, std::vector<glm::dvec3>& normals) {
+void sphere(int n, double radius, std::vector<glm::dvec3>& positions,
+            std::vector<glm::dvec3>& normals) {
   for (int i = 1; i < n; ++i)
     for (int j = 0; j < 2 * n; ++j) {
       const double theta = optics::kPi * i / n, phi = optics::kPi * j / n;
-      const glm::dvec3 d(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+      const glm::dvec3 d(std::sin(theta) * std::cos(phi), std::cos(theta),
+                         std::sin(theta) * std::sin(phi));
       positions.push_back(radius * d), normals.push_back(d);
     }
 }
@@ -32,7 +34,9 @@ double weightSum(const util::ShepardWeights& w, std::size_t v) {
 
 }  // namespace
 
-TEST_CASE("Transport points: within the budget, spread over the surface, and a linear field interpolated closely") {
+TEST_CASE(
+    "Transport points: within the budget, spread over the surface, and a linear field interpolated "
+    "closely") {
   std::vector<glm::dvec3> positions, normals;
   sphere(100, 10.0, positions, normals);  // 19800 vertices
   const prt::TransportPoints points =
@@ -41,11 +45,12 @@ TEST_CASE("Transport points: within the budget, spread over the surface, and a l
   CHECK_FALSE(points.spacingLimited);
   CHECK(points.vertex.size() <= 2000);
   CHECK(points.vertex.size() >= 1000);  // the bisection lands near the budget
-  double farthest = 0;  // every vertex has a point within a cell's diagonal
+  double farthest = 0;                  // every vertex has a point within a cell's diagonal
   for (std::size_t v = 0; v < positions.size(); ++v) {
     CHECK(weightSum(points.toVertices, v) == doctest::Approx(1.0));
     double nearest = 1e300;
-    for (std::uint32_t p : points.vertex) nearest = std::min(nearest, glm::distance(positions[p], positions[v]));
+    for (std::uint32_t p : points.vertex)
+      nearest = std::min(nearest, glm::distance(positions[p], positions[v]));
     farthest = std::max(farthest, nearest);
   }
   CHECK(farthest <= points.cell * std::sqrt(3.0));
@@ -65,7 +70,9 @@ TEST_CASE("Transport points: within the budget, spread over the surface, and a l
   CHECK(worst <= std::sqrt(6.0) * points.cell);  // |grad f| = sqrt(6), the nearest within a cell
 }
 
-TEST_CASE("Transport points: a sheet thinner than a cell keeps a point on each side, and each side interpolates its own") {
+TEST_CASE(
+    "Transport points: a sheet thinner than a cell keeps a point on each side, and each side "
+    "interpolates its own") {
   std::vector<glm::dvec3> positions, normals;
   for (int side = 0; side < 2; ++side)
     for (int i = 0; i < 60; ++i)
@@ -82,26 +89,33 @@ TEST_CASE("Transport points: a sheet thinner than a cell keeps a point on each s
   const util::ShepardWeights& w = points.toVertices;
   for (std::size_t v = 0; v < positions.size(); ++v)
     for (std::size_t k = 0; k < w.b; ++k)
-      if (w.weight[v * w.b + k] > 0) CHECK(glm::dot(normals[points.vertex[w.index[v * w.b + k]]], normals[v]) > 0);
+      if (w.weight[v * w.b + k] > 0)
+        CHECK(glm::dot(normals[points.vertex[w.index[v * w.b + k]]], normals[v]) > 0);
 }
 
-TEST_CASE("Transport points: every vertex when the budget is 0 or not below the count, and never sparser than the bound") {
+TEST_CASE(
+    "Transport points: every vertex when the budget is 0 or not below the count, and never sparser "
+    "than the bound") {
   std::vector<glm::dvec3> positions, normals;
   sphere(40, 10.0, positions, normals);
   CHECK(prt::chooseTransportPoints(positions, normals, 0, 5.0, util::serialFor).everyVertex());
-  CHECK(prt::chooseTransportPoints(positions, normals, positions.size(), 5.0, util::serialFor).everyVertex());
-  const prt::TransportPoints bounded = prt::chooseTransportPoints(positions, normals, 10, 1.0, util::serialFor);
+  CHECK(prt::chooseTransportPoints(positions, normals, positions.size(), 5.0, util::serialFor)
+            .everyVertex());
+  const prt::TransportPoints bounded =
+      prt::chooseTransportPoints(positions, normals, 10, 1.0, util::serialFor);
   CHECK(bounded.spacingLimited);
   CHECK(bounded.cell == 1.0);
   CHECK(bounded.vertex.size() > 10);
 }
 
-TEST_CASE("Thinned samples: one per cell and facing, on a member's position, the area kept in total") {
+TEST_CASE(
+    "Thinned samples: one per cell and facing, on a member's position, the area kept in total") {
   reference::SurfaceSamples dense;  // a 10 x 10 mm sheet sampled every 0.05 mm on both faces
   for (int side = 0; side < 2; ++side)
     for (int i = 0; i < 200; ++i)
       for (int j = 0; j < 200; ++j) {
-        dense.position.push_back({0.05 * i + 0.025, 0.05 * j + 0.025, 0.01 * side});  // off the cell faces
+        dense.position.push_back(
+            {0.05 * i + 0.025, 0.05 * j + 0.025, 0.01 * side});  // off the cell faces
         dense.normal.push_back({0, 0, side == 0 ? -1 : 1});
         dense.faceNormal.push_back(dense.normal.back());
         dense.area.push_back(0.0025);
@@ -116,15 +130,19 @@ TEST_CASE("Thinned samples: one per cell and facing, on a member's position, the
   for (std::size_t i = 0; i < thin.size(); ++i) {
     CHECK(thin.area[i] > 0);
     CHECK(thin.area[i] <= 11 * 11 * 0.0025 * (1 + 1e-12));
-    CHECK(std::find(dense.position.begin(), dense.position.end(), thin.position[i]) != dense.position.end());
+    CHECK(std::find(dense.position.begin(), dense.position.end(), thin.position[i]) !=
+          dense.position.end());
   }
   // Already at the spacing: left as it is.
   CHECK(prt::thinSamples(dense, 0.05).size() == dense.size());
 }
 
-TEST_CASE("Grid clusters: a fine cell on a large object keeps far points apart (more cells than 2^20 an axis)") {
+TEST_CASE(
+    "Grid clusters: a fine cell on a large object keeps far points apart (more cells than 2^20 an "
+    "axis)") {
   std::vector<glm::dvec3> positions, normals;
-  for (int i = 0; i < 50; ++i) positions.push_back(glm::dvec3(2.0 * i, 3.0 * i, 1.0 * i)), normals.push_back({0, 0, 1});
+  for (int i = 0; i < 50; ++i)
+    positions.push_back(glm::dvec3(2.0 * i, 3.0 * i, 1.0 * i)), normals.push_back({0, 0, 1});
   const util::GridClusters c = util::gridClusters(positions, normals, 1e-5);  // 10^7 cells along x
   CHECK(c.count == positions.size());
 }

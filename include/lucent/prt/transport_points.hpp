@@ -1,11 +1,11 @@
 #pragma once
 /// @file transport_points.hpp
-/// @brief Where the per-vertex transport vectors (Wang et al. 2005, Eq. 6-7) are computed: at most a
-/// budget of the mesh's vertices, picked one per grid cell and normal direction, every vertex then
-/// interpolating the relit points (Shepard weights from the nearest that face its way). Multiple
-/// scattering is blurred over the diffusion profile's width, so transport sampled no coarser than that
-/// width loses little, while a scanned mesh's vertex count (tens of thousands at a 32x32 image) sets the
-/// precomputation's cost, not the light's structure.
+/// @brief Where the per-vertex transport vectors (Wang et al. 2005, Eq. 6-7) are computed: at most
+/// a budget of the mesh's vertices, picked one per grid cell and normal direction, every vertex
+/// then interpolating the relit points (Shepard weights from the nearest that face its way).
+/// Multiple scattering is blurred over the diffusion profile's width, so transport sampled no
+/// coarser than that width loses little, while a scanned mesh's vertex count (tens of thousands at
+/// a 32x32 image) sets the precomputation's cost, not the light's structure.
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -28,7 +28,6 @@ struct TransportPoints {
 
   bool everyVertex() const { return toVertices.b == 0; }
 };
-
 
 /// At most `budget` points (0: every vertex), but never a grid cell wider than `maxCell` (the
 /// points' spacing stays within the profile's width).

@@ -41,17 +41,20 @@ struct GridClusters {
 };
 
 namespace detail {
-/// A point's cluster: its grid cell (unbounded: a fine cell on a large object has more cells along an axis
-/// than a packed key could hold) and its normal's bin.
+/// A point's cluster: its grid cell (unbounded: a fine cell on a large object has more cells along
+/// an axis than a packed key could hold) and its normal's bin.
 struct GridKey {
   std::int64_t x, y, z;
   int bin;
-  bool operator==(const GridKey& o) const { return x == o.x && y == o.y && z == o.z && bin == o.bin; }
+  bool operator==(const GridKey& o) const {
+    return x == o.x && y == o.y && z == o.z && bin == o.bin;
+  }
 };
 struct GridKeyHash {
   std::size_t operator()(const GridKey& k) const {
     std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the four fields
-    for (std::uint64_t v : {std::uint64_t(k.x), std::uint64_t(k.y), std::uint64_t(k.z), std::uint64_t(k.bin)})
+    for (std::uint64_t v :
+         {std::uint64_t(k.x), std::uint64_t(k.y), std::uint64_t(k.z), std::uint64_t(k.bin)})
       h = (h ^ v) * 1099511628211ull;
     return std::size_t(h);
   }
