@@ -13,6 +13,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "fingerprint.hpp"
+
 namespace lucent::util {
 
 struct GridClusters {
@@ -52,11 +54,8 @@ struct GridKey {
 };
 struct GridKeyHash {
   std::size_t operator()(const GridKey& k) const {
-    std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the four fields
-    for (std::uint64_t v :
-         {std::uint64_t(k.x), std::uint64_t(k.y), std::uint64_t(k.z), std::uint64_t(k.bin)})
-      h = (h ^ v) * 1099511628211ull;
-    return std::size_t(h);
+    return std::size_t(
+        Fingerprint().addValue(k.x).addValue(k.y).addValue(k.z).addValue(k.bin).value());
   }
 };
 }  // namespace detail
