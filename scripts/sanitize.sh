@@ -3,14 +3,12 @@
 # in build-sanitize/ (clang), and run: any report fails the run. Part of scripts/test.sh.
 #
 # clang, not gcc: under the sanitizers at -O2 it compiles the core registry's unit in 73 s where gcc took
-# 178 s (measured on src/technique/core_registry.cpp, this machine). The fuzz tree (scripts/fuzz.sh) stays
-# apart: its libFuzzer coverage instrumentation made these tests run 3.4 times longer (22 min against
-# 6.5), measured with one tree for both.
+# 178 s (measured on src/technique/core_registry.cpp, this machine). scripts/fuzz.sh builds its targets
+# in the same tree. Only the input readers carry libFuzzer's coverage instrumentation: with every
+# library instrumented these tests ran 3.4 times longer (22 min against 6.5).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/lib/apt-install-missing.sh clang libclang-rt-14-dev
-[ -f build-sanitize/CMakeCache.txt ] ||
-  CC=clang CXX=clang++ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLUCENT_SANITIZE=ON >/dev/null
+scripts/lib/sanitize-tree.sh
 cmake --build build-sanitize -j"$(nproc)" --target lucent lucent_unit_tests lucent_integration_tests
 export ASAN_OPTIONS="abort_on_error=1:detect_leaks=1"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"

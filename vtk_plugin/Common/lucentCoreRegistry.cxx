@@ -1,6 +1,6 @@
-// The registries of lucentFilterTechniques.h, compiled once per module. In lucent's own build the
-// core registry is the one lucent_core_registry compiled for the CLI
-// (LUCENT_COMPILED_CORE_REGISTRY); against ParaView's VTK it is instantiated here from the headers.
+// The registries of lucentFilterTechniques.h, compiled once per module. The core registry is
+// lucent_core_registry's (LUCENT_COMPILED_CORE_REGISTRY), which lucent's build and the ParaView tree
+// compile once for every module; an embedder's build without it instantiates it here from the headers.
 #include "lucentFilterTechniques.h"
 
 #ifdef LUCENT_COMPILED_CORE_REGISTRY
