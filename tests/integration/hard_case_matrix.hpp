@@ -51,6 +51,8 @@ struct HardCaseOutcome {
   glm::dvec3 ratio{0};  ///< lit-cap radiance over the diffusion limit, per channel
   glm::dvec3 limit{0};  ///< the diffusion limit's mean radiance on the lit cap
   glm::dvec3 mean{0};   ///< the cap's mean radiance
+  /// The standard error of `ratio` (Monte Carlo techniques, from their "stderr" output; else 0).
+  glm::dvec3 ratioError{0};
   double seconds = 0;
 };
 
@@ -101,7 +103,10 @@ inline HardCaseOutcome runHardCase(const technique::Registry& registry,
   const optics::Dipole<double> dipole = optics::Dipole<double>::make(
       scene.medium.material.sigmaA, scene.medium.material.sigmaSPrime, c.eta);
   const glm::dvec3 total = dipole.total();
-  glm::dvec3 sum(0), limitSum(0);
+  const std::vector<glm::dvec3>* stdError = nullptr;
+  for (const auto& [name, values] : r.frame.extras)
+    if (name == "stderr") stdError = &values;
+  glm::dvec3 sum(0), limitSum(0), varianceSum(0);
   for (std::size_t i = 0; i < request.points.size(); ++i) {
     const glm::dvec3 L = r.frame.radiance[i];
     for (int k = 0; k < 3; ++k) {
@@ -114,12 +119,16 @@ inline HardCaseOutcome runHardCase(const technique::Registry& registry,
     const double ft = optics::fresnelTransmittance(cosine, c.eta);
     const glm::dvec3 limit = total * (ft * transmittedIrradiance(c, cosine) / optics::kPi);
     sum += L, limitSum += limit;
+    if (stdError) varianceSum += (*stdError)[i] * (*stdError)[i];
     ++out.litPixels;
   }
   if (out.litPixels > 0) {
     out.limit = limitSum / double(out.litPixels);
     out.mean = sum / double(out.litPixels);
-    for (int k = 0; k < 3; ++k) out.ratio[k] = limitSum[k] > 0 ? sum[k] / limitSum[k] : 0;
+    for (int k = 0; k < 3; ++k) {
+      out.ratio[k] = limitSum[k] > 0 ? sum[k] / limitSum[k] : 0;
+      out.ratioError[k] = limitSum[k] > 0 ? std::sqrt(varianceSum[k]) / limitSum[k] : 0;
+    }
   }
   return out;
 }

@@ -77,8 +77,13 @@ TEST_CASE(
       if (o.capabilities.groundTruth && o.model == t.model) truth = truth ? truth : &o;
     if (!truth) return nullptr;
     const auto key = std::make_tuple(truth->name, c.material, c.sizeMm, c.eta, c.environment);
-    if (!truths.count(key))
-      truths[key] = test::runHardCase(registry, *truth, c, truth->quickKnobs);  // defaults
+    if (!truths.count(key)) {
+      // The surface's own reflection left out where the truth can: every technique compared with
+      // it renders the subsurface light alone (a uniform sky's reflection is most of espresso's).
+      technique::KnobList knobs = truth->quickKnobs;
+      if (truth->knob("subsurface")) knobs.emplace_back("subsurface", "1");
+      truths[key] = test::runHardCase(registry, *truth, c, knobs);
+    }
     return &truths[key];
   };
   int refused = 0, compared = 0, limits = 0;
@@ -111,8 +116,12 @@ TEST_CASE(
                 if (!(truth->ratio[k] > 1e-3)) continue;  // a channel with no diffuse light
                 toTruth[k] = o.ratio[k] / truth->ratio[k];
                 if (t.capabilities.groundTruth) continue;
-                INFO("channel " << k << ": " << toTruth[k] << " of the model's truth");
-                CHECK(near(toTruth[k], 1, 0.3));
+                // Within 30 %, widened by 4 standard errors where both are Monte Carlo estimates
+                // (a 10x10 image at 4 samples a pixel resolves no better).
+                const double noise = 4 * std::hypot(o.ratioError[k], truth->ratioError[k]);
+                INFO("channel " << k << ": " << toTruth[k] << " of the model's truth, noise "
+                                << noise / truth->ratio[k]);
+                CHECK(std::abs(o.ratio[k] - truth->ratio[k]) <= 0.3 * truth->ratio[k] + noise);
               }
               ++compared;
             }

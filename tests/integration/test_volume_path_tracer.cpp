@@ -143,16 +143,9 @@ TEST_CASE(
   const raycast::EmbreeRayCaster caster(scene.mesh);
   const std::vector<scene::Light> lights{
       scene::DirectionalLight{glm::dvec3(0, 0, 1), glm::dvec3(1.0)}};
-  const double mu = 0.6;
-  const glm::dvec3 toEye(std::sqrt(1 - mu * mu), 0, mu);
-  auto rayOf = [&](std::size_t, util::Rng& rng) {
-    const glm::dvec3 target(4 * rng.uniform() - 2, 4 * rng.uniform() - 2, 0);
-    return scene::Ray{target + 50.0 * toEye, -toEye};
-  };
-  glm::dvec3 exact;
-  for (int c = 0; c < 3; ++c)
-    exact[c] = albedo[c] / (4 * optics::kPi) / (1 + mu) * test::chandrasekharH(mu, albedo[c]) *
-               test::chandrasekharH(1.0, albedo[c]);
+  const test::HalfSpaceView view = test::halfSpaceView(0.6, albedo);
+  const glm::dvec3& exact = view.exact;
+  auto rayOf = [&](std::size_t, util::Rng& rng) { return view.rayAt(rng); };
   for (auto choice : {reference::HeroChoice::Reflectance, reference::HeroChoice::Uniform}) {
     reference::PathTracerSettings s;
     s.heroChoice = choice;

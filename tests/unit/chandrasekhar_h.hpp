@@ -1,10 +1,14 @@
 #pragma once
-// Chandrasekhar's H-function for isotropic scattering, solved numerically: the independent reference of
-// the Monte Carlo tests (pencil beam and volume path tracer).
+// Chandrasekhar's H-function for isotropic scattering, solved numerically: the independent
+// reference of the Monte Carlo tests (pencil beam and volume path tracer).
 #include <cmath>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include <lucent/optics/constants.hpp>
+#include <lucent/scene/camera.hpp>
+#include <lucent/util/rng.hpp>
 
 namespace lucent::test {
 // Gauss-Legendre nodes and weights on [0, 1] (Newton on P_n), for the H-function quadrature.
@@ -29,9 +33,9 @@ inline void gaussLegendre01(int n, std::vector<double>& x, std::vector<double>& 
   }
 }
 
-// Chandrasekhar's H-function for isotropic scattering with single-scattering albedo a, by fixed-point
-// iteration of 1/H(mu) = sqrt(1-a) + (a/2) int_0^1 mu' H(mu') / (mu + mu') dmu' (Chandrasekhar 1960,
-// Radiative Transfer, the form that converges for every a < 1).
+// Chandrasekhar's H-function for isotropic scattering with single-scattering albedo a, by
+// fixed-point iteration of 1/H(mu) = sqrt(1-a) + (a/2) int_0^1 mu' H(mu') / (mu + mu') dmu'
+// (Chandrasekhar 1960, Radiative Transfer, the form that converges for every a < 1).
 inline double chandrasekharH(double mu, double a) {
   std::vector<double> x, w;
   gaussLegendre01(48, x, w);
@@ -47,5 +51,26 @@ inline double chandrasekharH(double mu, double a) {
     h.swap(next);
   }
   return evaluate(mu);
+}
+
+// Radiance reflected towards mu by an isotropically scattering half-space of albedo a under a
+// normally incident beam of unit irradiance: (a / 4pi) H(mu) H(1) / (1 + mu) (Chandrasekhar 1960).
+inline double halfSpaceReflected(double mu, double a) {
+  return a / (4 * optics::kPi) / (1 + mu) * chandrasekharH(mu, a) * chandrasekharH(1.0, a);
+}
+
+// Three channels' albedos, rays towards the eye at mu aimed at the half-space's face z = 0, and
+// each channel's reflected radiance.
+struct HalfSpaceView {
+  glm::dvec3 toEye, exact;
+  scene::Ray rayAt(util::Rng& rng) const {
+    const glm::dvec3 target(4 * rng.uniform() - 2, 4 * rng.uniform() - 2, 0);
+    return scene::Ray{target + 50.0 * toEye, -toEye};
+  }
+};
+inline HalfSpaceView halfSpaceView(double mu, const glm::dvec3& albedo) {
+  HalfSpaceView v{glm::dvec3(std::sqrt(1 - mu * mu), 0, mu), glm::dvec3(0)};
+  for (int c = 0; c < 3; ++c) v.exact[c] = halfSpaceReflected(mu, albedo[c]);
+  return v;
 }
 }  // namespace lucent::test

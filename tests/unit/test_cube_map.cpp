@@ -25,7 +25,8 @@ EnvironmentLight latLongProbe(int width, double noise, std::uint32_t seed) {
   env.width = width, env.height = width / 2;
   for (int row = 0; row < env.height; ++row)
     for (int col = 0; col < env.width; ++col) {
-      const double theta = lucent::optics::kPi * (row + 0.5) / env.height, phi = 2 * lucent::optics::kPi * (col + 0.5) / env.width;
+      const double theta = lucent::optics::kPi * (row + 0.5) / env.height,
+                   phi = 2 * lucent::optics::kPi * (col + 0.5) / env.width;
       const glm::dvec3 d(std::sin(theta) * std::sin(phi), std::cos(theta),
                          -std::sin(theta) * std::cos(phi));
       const double smooth = 1 + 0.5 * d.x + 0.25 * d.y * d.y;
@@ -162,7 +163,8 @@ TEST_CASE("Cube image layouts: every texel round-trips and the crosses' neighbou
             if (x + dx >= w || y + dy >= h) continue;
             const glm::dvec3 e = direction[std::size_t(y + dy) * w + x + dx];
             if (glm::length(e) == 0) continue;
-            CHECK(std::acos(std::min(1.0, glm::dot(d, e))) < 2.5 * (lucent::optics::kPi / 2) / size);
+            CHECK(std::acos(std::min(1.0, glm::dot(d, e))) <
+                  2.5 * (lucent::optics::kPi / 2) / size);
             seams += cube::facePoint(d).face != cube::facePoint(e).face;
           }
         }
@@ -205,4 +207,26 @@ TEST_CASE("The cube-map sampler's pdf is exact: E[f/pdf] is the integral of f") 
         quadrature += (1 + d.z) * env.lookup(d).y * dOmega;
       }
   CHECK(firstMoment / n == doctest::Approx(quadrature).epsilon(0.01));
+}
+
+TEST_CASE("The environment sampler's pdf(dir) is the density sample() drew dir with") {
+  // Multiple importance sampling weighs a direction drawn another way by pdf(dir) (the random
+  // walk's exits): it must agree with sample() for both layouts, and integrate to 1 over the
+  // sphere.
+  for (const EnvironmentLight& env : {latLongProbe(16, 3.0, 5), randomCube(4, 7)}) {
+    const EnvironmentSampler sampler(env);
+    REQUIRE(sampler.valid());
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int i = 0; i < 2000; ++i) {
+      double pdf = 0;
+      const glm::dvec3 d = sampler.sample(u(rng), u(rng), u(rng), pdf);
+      CHECK(sampler.pdf(d) == doctest::Approx(pdf).epsilon(1e-9));
+    }
+    std::mt19937 dirs(13);
+    double total = 0;
+    const int n = 200000;
+    for (int i = 0; i < n; ++i) total += sampler.pdf(randomDirection(dirs));
+    CHECK(total / n * 4 * lucent::optics::kPi == doctest::Approx(1).epsilon(0.02));
+  }
 }

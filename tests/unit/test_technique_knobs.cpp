@@ -69,7 +69,7 @@ TEST_CASE(
     "Every core technique: valid defaults, unique knob names, and a default sweep over its own "
     "knobs") {
   const Registry r = compiledCoreRegistry();
-  CHECK(r.all().size() == 9);
+  CHECK(r.all().size() == 10);
   for (const auto& t : r.all()) {
     INFO(t.name);
     CHECK_FALSE(t.summary.empty());

@@ -32,8 +32,11 @@
 #include "../scene/camera.hpp"
 #include "../scene/surface_clearance_grid.hpp"
 #include "../util/parallel.hpp"
+#include "hero_choice.hpp"
 #include "light_subpaths.hpp"
 #include "manifold_next_event.hpp"
+#include "medium_flight.hpp"
+#include "segment_transmittance.hpp"
 
 namespace lucent::reference {
 
@@ -82,7 +85,7 @@ class VolumePathTracer {
     if (!matched && !mNextEvent.empty())
       mManifold.emplace(scene, caster, std::max(0, settings.manifoldGap));
     mGuideRadius = settings.guideRadius > 0 ? settings.guideRadius : autoGuideRadius();
-    if (settings.heroChoice == HeroChoice::Reflectance) mHeroChoice = reflectanceHeroChoice();
+    if (settings.heroChoice == HeroChoice::Reflectance) mHeroChoice = reflectanceHeroChoice(scene);
   }
 
   /// P_c, the probability of each channel being a path's hero.
@@ -126,27 +129,16 @@ class VolumePathTracer {
       const Medium& m = mScene.media[medium];
       std::optional<scene::RayHit> hit;
       if (!m.vacuum()) {
-        // A homogeneous flight is drawn first: one that ends short of every surface (the clearance
-        // grid's bound) needs no ray cast. Joins need the whole segment, so they always cast.
-        const bool drawFirst = m.homogeneous() && targets.empty();
-        double t = drawFirst ? drawHomogeneousFlight(m, hero, rng) : 0;
-        const bool clear = drawFirst && t < mClearance.lowerBound(pos) - 4 * s.rayEpsilon;
-        if (!clear) {
-          hit = mCaster.intersect(pos, dir, 0, kInf);
-          if (!hit) {
-            ++st.leakedPaths;
-            break;
-          }
-        } else {
-          ++st.clearFlights;
-        }
+        // Joins need the whole segment, so they always cast.
+        MediumFlight flight;
+        if (!flight.begin(m, mCaster, mClearance, pos, dir, hero, rng, s.rayEpsilon,
+                          !targets.empty(), st))
+          break;
+        hit = flight.hit;
         if (!targets.empty())
           radiance += joinAlongSegment(pos, dir, hit->t, medium, w, scatters + 1, targets, rng, st);
-        const bool collided = drawFirst
-                                  ? finishHomogeneousFlight(m, t, clear ? kInf : hit->t, w)
-                                  : sampleFlight(m, pos, dir, hit->t, hero, rng, w, t, st.medium);
-        if (collided) {
-          pos += t * dir;
+        if (flight.collides(m, pos, dir, hero, rng, w, st.medium)) {
+          pos += flight.t * dir;
           ++scatters, ++st.scatterEvents;
           if (scatters > 1 && !specularSinceScatter) straightEdge = true;
           specularSinceScatter = false;
@@ -197,7 +189,7 @@ class VolumePathTracer {
     // whole object left a 100 m spectralon sphere black (the camera's walk ends within a few mean
     // free paths of its entry). The disc's pdf is a mixture with a uniform part: any scale is
     // unbiased.
-    const Medium* m = firstMedium();
+    const Medium* m = firstMedium(mScene);
     if (!m) return mRadius;
     const glm::dvec3 sigmaTPrime = m->sigmaA + (1 - m->g) * m->sigmaS;
     const glm::dvec3 sigmaTr = glm::sqrt(3.0 * m->sigmaA * sigmaTPrime);
@@ -207,28 +199,6 @@ class VolumePathTracer {
     const double length =
         std::clamp(meanTr > 0 ? 1 / meanTr : mRadius, meanFreePath, 10 * meanFreePath);
     return std::min(length, mRadius);
-  }
-
-  /// The object's medium, which sets the scales of the light subpaths and the hero choice: the
-  /// first one that is not vacuum (nullptr if none is).
-  const Medium* firstMedium() const {
-    for (std::size_t i = 1; i < mScene.media.size(); ++i)
-      if (!mScene.media[i].vacuum()) return &mScene.media[i];
-    return nullptr;
-  }
-
-  /// P_c = 0.8 Rd_c / sum Rd + 0.2 / 3 for the first medium's total diffuse reflectance Rd
-  /// (Jensen et al. 2001, Eq. 14): the channels are sampled about as often as they show in the
-  /// image, and none less than 1/15 of the time. Uniform where Rd says nothing (no medium, or a
-  /// pure absorber).
-  glm::dvec3 reflectanceHeroChoice() const {
-    const Medium* m = firstMedium();
-    if (!m) return glm::dvec3(1.0 / 3);
-    const glm::dvec3 rd =
-        optics::Dipole<double>::make(m->sigmaA, (1 - m->g) * m->sigmaS, m->eta).total();
-    const double sum = rd.x + rd.y + rd.z;
-    if (!(sum > 0) || !std::isfinite(sum)) return glm::dvec3(1.0 / 3);
-    return 0.8 * rd / sum + glm::dvec3(0.2 / 3);
   }
 
   void traceLightSubpaths(const glm::dvec3& entry, int hero, util::Rng& rng,
@@ -243,61 +213,12 @@ class VolumePathTracer {
       targets[i].weight.scale(glm::dvec3(1.0 / mSettings.lightSubpaths));
   }
 
-  /// Roulette on the physical throughput: the weight without the radiance scaling of the
-  /// refractions so far (pbrt-v4's etaScale), which the exit undoes. Read as a loss, the entry's
-  /// (1/1.3)^2 = 0.59 ended 41 % of the paths in a medium of eta 1.3 at their 4th scatter, even
-  /// without absorption.
-  bool survivesRoulette(HeroChannelWeight& w, double radianceScale, int scatters,
-                        util::Rng& rng) const {
-    if (scatters <= 3) return true;
-    const double throughput = maxComponent(w.value()) / radianceScale;
-    if (throughput >= 1) return true;
-    const double q = std::max(0.05, throughput);
-    if (rng.uniform() >= q) return false;
-    w.scale(glm::dvec3(1 / q));
-    return true;
-  }
-
-  /// Where a straight segment ended: at its end, at a refracting facet, or neither known.
-  struct SegmentEnd {
-    bool reachedEnd = false;
-    std::optional<std::uint32_t> refractingFacet;
-  };
-
-  /// Transmittance from x along `dir` over `length` through null interfaces only (0 at a specular
-  /// one), ending in `endMedium` when given; `end`, when given, learns where the segment stopped.
-  glm::dvec3 segmentTransmittance(glm::dvec3 x, std::uint32_t medium, const glm::dvec3& dir,
+  glm::dvec3 segmentTransmittance(const glm::dvec3& x, std::uint32_t medium, const glm::dvec3& dir,
                                   double length, std::optional<std::uint32_t> endMedium,
                                   util::Rng& rng, PathTracerStats& st,
                                   SegmentEnd* end = nullptr) const {
-    glm::dvec3 tr(1);
-    for (int crossings = 0; crossings < 64; ++crossings) {
-      const auto hit = mCaster.intersect(x, dir, 0, length);
-      const double seg = hit ? hit->t : length;
-      if (!hit && !std::isfinite(length) && !mScene.media[medium].vacuum()) {
-        // A medium with no surface ahead on an endless segment (towards a directional light): the
-        // path leaked out through a crossing the ray caster missed; ratio tracking there would walk
-        // forever where the density is zero.
-        ++st.leakedPaths;
-        return glm::dvec3(0);
-      }
-      if (!mScene.media[medium].vacuum())
-        tr *= transmittance(mScene.media[medium], x, dir, seg, rng, st.medium);
-      if (!hit) {
-        if (end) end->reachedEnd = true;
-        return !endMedium || *endMedium == medium ? tr : glm::dvec3(0);
-      }
-      if (maxComponent(tr) <= 0) return tr;
-      const InterfaceSides sides = interfaceSides(mScene, hit->triangle, dir);
-      if (mScene.media[sides.from].eta != mScene.media[sides.to].eta) {
-        if (end) end->refractingFacet = hit->triangle;
-        return glm::dvec3(0);
-      }
-      x += hit->t * dir - mSettings.rayEpsilon * sides.normalTowardsPath;
-      length -= hit->t;
-      medium = sides.to;
-    }
-    return glm::dvec3(0);
+    return reference::segmentTransmittance(mScene, mCaster, mSettings.rayEpsilon, x, medium, dir,
+                                           length, endMedium, rng, st, end);
   }
 
   glm::dvec3 nextEventEstimate(const glm::dvec3& x, const glm::dvec3& dirIn, std::uint32_t medium,

@@ -36,6 +36,21 @@ inline glm::dvec3 scatterHG(const glm::dvec3& d, double g, util::Rng& rng) {
 
 inline double maxComponent(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
 
+/// Russian roulette after the third scatter, on the physical throughput: the weight without the
+/// radiance scaling of the refractions so far (pbrt-v4's etaScale), which the exit undoes. Read as a
+/// loss, the entry's (1/1.3)^2 = 0.59 ended 41 % of the paths in a medium of eta 1.3 at their 4th
+/// scatter, even without absorption. False: the path ends; else `w` carries the survival's 1/q.
+inline bool survivesRoulette(HeroChannelWeight& w, double radianceScale, int scatters,
+                             util::Rng& rng) {
+  if (scatters <= 3) return true;
+  const double throughput = maxComponent(w.value()) / radianceScale;
+  if (throughput >= 1) return true;
+  const double q = std::max(0.05, throughput);
+  if (rng.uniform() >= q) return false;
+  w.scale(glm::dvec3(1 / q));
+  return true;
+}
+
 /// Counts of what a tracer had to correct; tests assert they stay zero where they must.
 struct MediumSamplingStats {
   std::uint64_t majorantViolations = 0;  ///< density above maxDensity (clamped: biased there)

@@ -58,6 +58,20 @@ class EnvironmentSampler {
     return {sinTheta * std::sin(phi), cosTheta, -sinTheta * std::cos(phi)};
   }
 
+  /// The solid-angle pdf with which sample() draws `dir` (any length but zero): what multiple
+  /// importance sampling weighs a direction drawn another way with.
+  double pdf(const glm::dvec3& dir) const {
+    if (!valid()) return 0;
+    const std::size_t i = mEnv->texelOf(dir);
+    const double texelProbability = (mCdf[i + 1] - mCdf[i]) / mTotal;
+    if (mEnv->layout == EnvironmentLayout::Cube) {
+      const cube::FacePoint f = cube::facePoint(dir);
+      const double area = 4.0 / (double(mEnv->width) * mEnv->width);
+      return texelProbability / area * std::pow(1 + f.s * f.s + f.t * f.t, 1.5);
+    }
+    return texelProbability / mEnv->texelSolidAngle(i);
+  }
+
  private:
   const EnvironmentLight* mEnv;
   std::vector<double> mCdf;

@@ -4,6 +4,8 @@
 /// radiance image).
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -86,5 +88,26 @@ struct EnvironmentLight {
 };
 
 using Light = std::variant<PointLight, DirectionalLight, EnvironmentLight>;
+
+/// A point or directional light as seen from a point: the unit direction towards it, its distance
+/// (infinite for a directional light) and the irradiance it gives normal to that direction.
+struct DeltaLightSight {
+  glm::dvec3 toLight{0}, irradiance{0};
+  double distance = 0;
+};
+
+/// How `light` is seen from x; empty for an environment, or a point light at x itself.
+inline std::optional<DeltaLightSight> deltaLightSight(const Light& light, const glm::dvec3& x) {
+  if (const auto* p = std::get_if<PointLight>(&light)) {
+    const glm::dvec3 v = p->position - x;
+    const double d = glm::length(v);
+    if (!(d > 0)) return std::nullopt;
+    return DeltaLightSight{v / d, p->intensity / (d * d), d};
+  }
+  if (const auto* d = std::get_if<DirectionalLight>(&light))
+    return DeltaLightSight{glm::normalize(d->towardLight), d->irradiance,
+                           std::numeric_limits<double>::infinity()};
+  return std::nullopt;
+}
 
 }  // namespace lucent::scene

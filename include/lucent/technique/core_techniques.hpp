@@ -7,6 +7,7 @@
 #include "dipole_sum.hpp"
 #include "optical_thickness.hpp"
 #include "path_tracing.hpp"
+#include "random_walk.hpp"
 #include "registry.hpp"
 #include "texture_space.hpp"
 #include "voxel_single.hpp"
@@ -23,6 +24,7 @@ inline void addCoreTechniques(Registry& registry) {
   registry.add(taulutTechnique());
   registry.add(voxelSingleTechnique());
   registry.add(pathtraceTechnique());
+  registry.add(randomwalkTechnique());
 }
 
 /// A registry holding the core techniques: what the VTK filter and the ParaView XML generator

@@ -32,6 +32,62 @@ inline reference::Medium pathTracerMedium(const Medium& medium, double g, bool m
   return m;
 }
 
+// The knobs the Monte Carlo techniques (pathtrace, randomwalk) share, each spelt once.
+inline KnobSpec sppKnob() {
+  return KnobSpec::integer(
+      "spp", 16, 1, 1 << 20,
+      "samples per pixel (the error falls as 1/sqrt(spp); see the reported standard error)");
+}
+inline KnobSpec seedKnob() {
+  return KnobSpec::integer("seed", 1, 0, 1000000000000000LL,
+                           "random seed (fixed seeds give identical images on any thread count)");
+}
+inline KnobSpec mediumGKnob() {
+  return KnobSpec::real(
+      "g", "0", -0.99, 0.99, "",
+      "HG mean cosine; sigma_s = sigma_s' / (1 - g) keeps the material's reduced coefficient");
+}
+inline KnobSpec boundaryKnob() {
+  return KnobSpec::choice(
+      "boundary", {"fresnel", "matched"},
+      "fresnel (the material's eta) or matched (eta 1: no refraction, no reflection)");
+}
+inline KnobSpec heroKnob() {
+  return KnobSpec::choice("hero", {"reflectance", "uniform"},
+                          "the channel each path draws its distances with: in proportion to the "
+                          "medium's total diffuse reflectance per channel, or uniformly");
+}
+inline KnobSpec maxEventsKnob() {
+  return KnobSpec::integer(
+      "max-events", static_cast<long long>(reference::PathTracerSettings{}.maxEvents), 10, 1000000000,
+      "surface and scattering events per path before it is dropped (counted)");
+}
+inline KnobSpec stderrKnob() {
+  return KnobSpec::outputFile("stderr", ".exr",
+                              "write the per-pixel standard error image to this EXR file");
+}
+inline reference::HeroChoice heroChoiceOf(const KnobValues& knobs) {
+  return knobs.pick<reference::HeroChoice>(
+      "hero", {{"reflectance", reference::HeroChoice::Reflectance},
+               {"uniform", reference::HeroChoice::Uniform}});
+}
+inline bool indexMatchedOf(const KnobValues& knobs) {
+  return knobs.pick<bool>("boundary", {{"fresnel", false}, {"matched", true}});
+}
+
+/// The object and its inclusions as the path tracer's media: the object's body first (its
+/// triangles keep the scene mesh's indices), each inclusion inside it.
+inline reference::MediumScene mediumSceneOf(const SceneDescription& scene, double g,
+                                            bool matched) {
+  reference::MediumScene media;
+  const auto objectId = media.addMedium(pathTracerMedium(scene.medium, g, matched));
+  media.addBody(scene.mesh, objectId, 0);
+  for (const auto& inclusion : scene.inclusions)
+    media.addBody(inclusion.surface,
+                  media.addMedium(pathTracerMedium(inclusion.medium, g, matched)), objectId);
+  return media;
+}
+
 inline reference::PathTracerSettings pathTracerSettings(const SceneDescription& scene,
                                                         const KnobValues& knobs) {
   reference::PathTracerSettings s;
@@ -50,9 +106,7 @@ inline reference::PathTracerSettings pathTracerSettings(const SceneDescription& 
       "delta-lights", {{"manifold", reference::DeltaLightStrategy::Manifold},
                        {"joins", reference::DeltaLightStrategy::Joins}});
   s.manifoldGap = int(knobs.integer("manifold-gap"));
-  s.heroChoice = knobs.pick<reference::HeroChoice>(
-      "hero", {{"reflectance", reference::HeroChoice::Reflectance},
-               {"uniform", reference::HeroChoice::Uniform}});
+  s.heroChoice = heroChoiceOf(knobs);
   s.lightSubpaths = int(knobs.integer("light-paths"));
   s.connectableOnly = knobs.pick<bool>("paths", {{"all", false}, {"connectable", true}});
   s.guideRadius = knobs.real("guide-radius");
@@ -76,9 +130,11 @@ inline void standardErrorFigures(const std::vector<glm::dvec3>& mean,
   stats.figures["image_mean_relative_stderr"] = meanSum > 0 ? std::sqrt(varSum) / meanSum : 0;
 }
 
-inline void pathTracerWarnings(const reference::PathTracerStats& st, Statistics& stats) {
+/// The counts that say something went wrong, as warnings of technique `who`.
+inline void pathTracerWarnings(const reference::PathTracerStats& st, Statistics& stats,
+                               const std::string& who = "pathtrace") {
   auto warn = [&](std::uint64_t n, const std::string& what) {
-    if (n) stats.warnings.push_back("pathtrace: " + std::to_string(n) + " " + what);
+    if (n) stats.warnings.push_back(who + ": " + std::to_string(n) + " " + what);
   };
   warn(
       st.truncatedPaths,
@@ -113,13 +169,8 @@ class PathTracing final : public Prepared {
                     Statistics& stats) override {
     const reference::PathTracerSettings s = pathTracerSettings(scene, mKnobs);
     const double g = mKnobs.real("g");
-    const bool matched = mKnobs.pick<bool>("boundary", {{"fresnel", false}, {"matched", true}});
-    reference::MediumScene media;
-    const auto objectId = media.addMedium(pathTracerMedium(scene.medium, g, matched));
-    media.addBody(scene.mesh, objectId, 0);
-    for (const auto& inclusion : scene.inclusions)
-      media.addBody(inclusion.surface,
-                    media.addMedium(pathTracerMedium(inclusion.medium, g, matched)), objectId);
+    const bool matched = indexMatchedOf(mKnobs);
+    const reference::MediumScene media = mediumSceneOf(scene, g, matched);
     const auto caster = scene.makeRayCaster(media.mesh);
     const reference::VolumePathTracer tracer(media, *caster, scene.lights, s);
     if (tracer.manifoldDeltaLights())
@@ -178,17 +229,7 @@ inline Technique pathtraceTechnique() {
       "Woodcock delta tracking, hero-wavelength MIS (Wilkie et al. 2014), radiative transfer "
       "equation";
   t.knobs = {
-      KnobSpec::integer(
-          "spp", 16, 1, 1 << 20,
-          "samples per pixel (the error falls as 1/sqrt(spp); see the reported standard error)"),
-      KnobSpec::integer("seed", 1, 0, 1000000000000000LL,
-                        "random seed (fixed seeds give identical images on any thread count)"),
-      KnobSpec::real(
-          "g", "0", -0.99, 0.99, "",
-          "HG mean cosine; sigma_s = sigma_s' / (1 - g) keeps the material's reduced coefficient"),
-      KnobSpec::choice(
-          "boundary", {"fresnel", "matched"},
-          "fresnel (the material's eta) or matched (eta 1: no refraction, no reflection)"),
+      detail::sppKnob(), detail::seedKnob(), detail::mediumGKnob(), detail::boundaryKnob(),
       KnobSpec::integer(
           "subsurface", 0, 0, 1,
           "1 = leave out the camera's first surface reflection (what the dipole methods render)"),
@@ -206,19 +247,14 @@ inline Technique pathtraceTechnique() {
       KnobSpec::integer("manifold-gap", reference::PathTracerSettings{}.manifoldGap, 0, 64,
                         "facets without a refraction point the manifold search crosses looking for "
                         "more (a curved shape focuses light through bands of facets)"),
-      KnobSpec::choice("hero", {"reflectance", "uniform"},
-                       "the channel each path draws its distances with: in proportion to the "
-                       "medium's total diffuse reflectance per channel, or uniformly"),
+      detail::heroKnob(),
       KnobSpec::integer(
           "light-paths", 1, 1, 1024,
           "light subpaths per delta light and camera sample (behind a refracting boundary)"),
       KnobSpec::real(
           "guide-radius", "0", 0, 1e9, "mm",
           "spread of light entry points around the camera's (0 = 1/sigma_tr of the material)"),
-      KnobSpec::integer("max-events", 200000, 10, 1000000000,
-                        "surface and scattering events per path before it is dropped (counted)"),
-      KnobSpec::outputFile("stderr", ".exr",
-                           "write the per-pixel standard error image to this EXR file")};
+      detail::maxEventsKnob(), detail::stderrKnob()};
   Capabilities& c = t.capabilities;
   c.heterogeneousMedia = c.inclusions = true;
   c.singleScattering = true;
