@@ -11,12 +11,13 @@ usage: bench/dipole_vs_pathtrace.py [BUILD_DIR] [OUT_DIR]   (defaults: build doc
 writes OUT_DIR/dipole-vs-pathtrace.csv and prints a Markdown table. Standard library only.
 """
 import csv
-import json
 import os
 import shutil
-import subprocess
 import sys
 import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import lucent_cli  # noqa: E402
 
 BUILD = sys.argv[1] if len(sys.argv) > 1 else "build"
 OUT = sys.argv[2] if len(sys.argv) > 2 else "docs/accuracy/pathtrace"
@@ -29,20 +30,13 @@ TMP = os.path.join(OUT, "tmp")
 
 
 def render(shape, size, material, method, tag, knobs=()):
-    exr, stats = os.path.join(TMP, tag + ".exr"), os.path.join(TMP, tag + ".json")
-    cmd = [LUCENT, "render", "--quiet", "--shape", shape, "--size-mm", str(size), "--material", material,
-           "--light", "env:uniform", "--width", str(RES), "--height", str(RES), "--method", method,
-           "--out", exr, "--stats", stats]
-    for k in knobs:
-        cmd += ["--knob", k]
-    subprocess.run(cmd, check=True, stderr=subprocess.DEVNULL)
-    with open(stats) as f:
-        return exr, json.load(f)
+    options = ["--shape", shape, "--size-mm", str(size), "--material", material, "--light", "env:uniform",
+               "--width", str(RES), "--height", str(RES)]
+    return lucent_cli.render(LUCENT, TMP, tag, options, method, knobs)
 
 
 def compare(test, ref):
-    out = subprocess.run([LUCENT, "compare", test, ref, "--json"], check=True, capture_output=True, text=True)
-    return json.loads(out.stdout)
+    return lucent_cli.compare(LUCENT, test, ref)
 
 
 def main():

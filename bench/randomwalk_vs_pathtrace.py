@@ -16,8 +16,10 @@ import csv
 import json
 import math
 import os
-import subprocess
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import lucent_cli  # noqa: E402
 
 BUILD = sys.argv[1] if len(sys.argv) > 1 else "build"
 OUT = sys.argv[2] if len(sys.argv) > 2 else "docs/accuracy/randomwalk"
@@ -48,19 +50,11 @@ SETTINGS = [
 
 
 def render(case_options, method, knobs, tag):
-    exr, stats = os.path.join(TMP, tag + ".exr"), os.path.join(TMP, tag + ".json")
-    cmd = [LUCENT, "render", "--quiet", *case_options, "--method", method, "--out", exr, "--stats", stats]
-    for k in knobs:
-        cmd += ["--knob", k]
-    subprocess.run(cmd, check=True, stderr=subprocess.DEVNULL)
-    with open(stats) as f:
-        return exr, json.load(f)
+    return lucent_cli.render(LUCENT, TMP, tag, case_options, method, knobs)
 
 
 def compare(test, ref):
-    out = subprocess.run([LUCENT, "compare", test, ref, "--json"], check=True, capture_output=True,
-                         text=True)
-    return json.loads(out.stdout)
+    return lucent_cli.compare(LUCENT, test, ref)
 
 
 def truth(name, options, spp):
