@@ -21,6 +21,7 @@
 
 #include <lucent/technique/registry.hpp>
 
+#include "../unit/chandrasekhar_h.hpp"
 #include "lucentPolyDataMesh.h"
 #include "vtkLucentFilter.h"
 
@@ -517,4 +518,45 @@ TEST_CASE(
   CHECK(errors.last.find("/nonexistent/lucent-calibration/settings.csv") != std::string::npos);
   CHECK(errors.last.find("calibrate_planner.py") != std::string::npos);
   CHECK(errors.last.find("CalibrationDirectory") != std::string::npos);
+}
+
+TEST_CASE(
+    "vtkLucentFilter: the random walk per vertex, index-matched, gives a thick slab's lit face "
+    "Chandrasekhar's half-space radiance") {
+  // Index-matched and isotropic (g 0: sigma_s = sigma_s'), the walk is exact, and a slab of about
+  // 30 mean free paths is a half-space at its face's centre: (a E / 4pi) H(1)^2 / 2 towards the
+  // normal.
+  vtkNew<vtkTessellatedBoxSource> box;
+  box->SetBounds(-30, 30, -30, 30, -15, 15);
+  box->SetLevel(4);
+  box->QuadsOn();
+  vtkNew<vtkLucentFilter> filter;
+  filter->SetInputConnection(box->GetOutputPort());
+  filter->SetMaterial("skin1");
+  filter->SetLightDirection(0, 0, 1);
+  filter->SetLightIrradiance(2.0);
+  filter->SetTechnique("randomwalk");
+  filter->SetKnob("randomwalk.boundary", "matched");
+  filter->SetKnob("randomwalk.spp", "4096");  // 4 points: about 1 % standard error
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput();
+  vtkDataArray* radiance = out->GetPointData()->GetArray("Radiance");
+  REQUIRE(radiance != nullptr);
+  double mean[3] = {0, 0, 0};
+  int centre = 0;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i) {
+    double p[3];
+    out->GetPoint(i, p);
+    for (int c = 0; c < 3; ++c) CHECK(std::isfinite(radiance->GetComponent(i, c)));
+    if (std::abs(p[2] - 15) > 1e-9 || std::hypot(p[0], p[1]) > 16) continue;
+    ++centre;
+    for (int c = 0; c < 3; ++c) mean[c] += radiance->GetComponent(i, c);
+  }
+  REQUIRE(centre >= 4);
+  for (int c = 0; c < 3; ++c) {
+    const double albedo = kSkinSigmaSPrime[c] / (kSkinSigmaSPrime[c] + kSkinSigmaA[c]);
+    const double exact = 2.0 * lucent::test::halfSpaceReflected(1.0, albedo);
+    INFO("channel " << c << ": " << mean[c] / centre << ", exact " << exact);
+    CHECK(mean[c] / centre == doctest::Approx(exact).epsilon(0.04));
+  }
 }

@@ -81,7 +81,18 @@ class RandomWalking final : public Prepared {
                     Statistics& stats) override {
     const reference::MediumScene media =
         mediumSceneOf(scene, mKnobs.real("g"), indexMatchedOf(mKnobs));
-    const auto caster = scene.makeRayCaster(media.mesh);
+    // The scene's own caster serves when the object is the only body (the VTK filter offers no
+    // factory); inclusions need one over every body.
+    std::unique_ptr<scene::RayCaster> ownCaster;
+    const scene::RayCaster* caster = scene.inclusions.empty() ? scene.caster : nullptr;
+    if (!caster) {
+      if (!scene.makeRayCaster)
+        throw RequestError(
+            "randomwalk: this front end gives no ray caster over the inclusions' "
+            "surfaces; render them with the CLI");
+      ownCaster = scene.makeRayCaster(media.mesh);
+      caster = ownCaster.get();
+    }
     walk::RandomWalkSettings s;
     s.maxEvents = std::uint64_t(mKnobs.integer("max-events"));
     s.exit = mKnobs.pick<walk::ExitRule>(
