@@ -32,6 +32,7 @@
 #include "../scene/camera.hpp"
 #include "../scene/surface_clearance_grid.hpp"
 #include "../util/parallel.hpp"
+#include "../util/sample_mean.hpp"
 #include "hero_choice.hpp"
 #include "light_subpaths.hpp"
 #include "manifold_next_event.hpp"
@@ -358,17 +359,11 @@ inline PathTracedImage renderPathTraced(const VolumePathTracer& tracer,
           continue;
         const std::size_t pixel = row * std::size_t(camera.width) + std::size_t(col);
         util::Rng rng(s.seed * 1000003ULL + pixel);
-        glm::dvec3 sum(0), sumSq(0);
-        for (int i = 0; i < spp; ++i) {
-          const glm::dvec3 l = tracer.sample(ray.origin, ray.direction, rng, local);
-          sum += l, sumSq += l * l;
-        }
-        const glm::dvec3 mean = sum / double(spp);
-        const glm::dvec3 variance = glm::max(glm::dvec3(0), sumSq / double(spp) - mean * mean) *
-                                    (spp > 1 ? double(spp) / (spp - 1) : 0.0);
-        out.image.pixels[pixel] = glm::vec4(glm::vec3(mean), 1.0f);
-        out.standardError.pixels[pixel] =
-            glm::vec4(glm::vec3(glm::sqrt(variance / double(spp))), 1.0f);
+        util::SampleMean estimate;
+        for (int i = 0; i < spp; ++i)
+          estimate.add(tracer.sample(ray.origin, ray.direction, rng, local));
+        out.image.pixels[pixel] = glm::vec4(glm::vec3(estimate.mean()), 1.0f);
+        out.standardError.pixels[pixel] = glm::vec4(glm::vec3(estimate.standardError()), 1.0f);
       }
       if (progress) progress(double(++rowsDone) / camera.height);
     }

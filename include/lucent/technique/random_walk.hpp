@@ -11,6 +11,7 @@
 #include <mutex>
 #include <string>
 
+#include "../util/sample_mean.hpp"
 #include "../walk/random_walk.hpp"
 #include "path_tracing.hpp"
 
@@ -24,18 +25,16 @@ struct WalkStart {
   std::uint32_t triangle;
 };
 
-inline std::vector<WalkStart> walkStarts(const SceneDescription& scene,
+/// `media`: mediumSceneOf's, whose first body keeps the scene mesh's triangle indices.
+inline std::vector<WalkStart> walkStarts(const reference::MediumScene& media,
                                          const ShadeRequest& request) {
   std::vector<WalkStart> out(request.points.size());
   for (std::size_t i = 0; i < out.size(); ++i) {
     const reference::ShadingPoint& p = request.points[i];
-    const glm::uvec3 tri = scene.mesh.triangles[p.triangle];
-    const glm::dvec3 n = glm::normalize(scene.mesh.areaVector(p.triangle));
     // From the barycentrics, in double: a far camera's hit distance carries float error.
-    const glm::dvec3 point = (1 - p.u - p.v) * glm::dvec3(scene.mesh.positions[tri.x]) +
-                             p.u * glm::dvec3(scene.mesh.positions[tri.y]) +
-                             p.v * glm::dvec3(scene.mesh.positions[tri.z]);
-    glm::dvec3 d = -n;  // a vertex is seen head-on (vertexRequest's cosOut = 1)
+    const glm::dvec3 point = reference::surfacePoint(media, {0, p.triangle, p.u, p.v});
+    // A vertex is seen head-on (vertexRequest's cosOut = 1).
+    glm::dvec3 d = -media.mesh.areaVector(p.triangle);
     if (request.camera) {
       const int width = request.camera->width;
       d = request.camera
@@ -48,24 +47,11 @@ inline std::vector<WalkStart> walkStarts(const SceneDescription& scene,
   return out;
 }
 
-/// Running sums of one point's estimates.
-struct PointEstimate {
-  glm::dvec3 sum{0}, sumSq{0};
-  int n = 0;
-  glm::dvec3 mean() const { return n ? sum / double(n) : glm::dvec3(0); }
-  glm::dvec3 standardError() const {
-    if (n < 2) return glm::dvec3(0);
-    const glm::dvec3 m = mean();
-    const glm::dvec3 var = glm::max(glm::dvec3(0), sumSq / double(n) - m * m) * (n / (n - 1.0));
-    return glm::sqrt(var / double(n));
-  }
-};
-
 /// Mean over lit points of the per-point relative standard error (luminance).
-inline double meanRelativeError(const std::vector<PointEstimate>& e) {
+inline double meanRelativeError(const std::vector<util::SampleMean>& e) {
   double sum = 0;
   std::size_t lit = 0;
-  for (const PointEstimate& p : e) {
+  for (const util::SampleMean& p : e) {
     const glm::dvec3 m = p.mean(), s = p.standardError();
     const double lum = (m.x + m.y + m.z) / 3;
     if (lum > 0) sum += (s.x + s.y + s.z) / 3 / lum, ++lit;
@@ -101,8 +87,8 @@ class RandomWalking final : public Prepared {
     s.heroChoice = heroChoiceOf(mKnobs);
     s.rayEpsilon = scene.rayEpsilon();
     const walk::RandomWalk walker(media, *caster, scene.lights, s);
-    const std::vector<WalkStart> starts = walkStarts(scene, request);
-    std::vector<PointEstimate> est(starts.size());
+    const std::vector<WalkStart> starts = walkStarts(media, request);
+    std::vector<util::SampleMean> est(starts.size());
     walk::RandomWalkStats total;
     int passes = 0;
     const int spp = stats.timeFrame(
@@ -124,7 +110,7 @@ class RandomWalking final : public Prepared {
   /// (0 = exactly spp). Pass k of point i draws from its own generator, so images do not depend on
   /// the thread count. Returns the samples each point got; `passes` learns how many passes ran.
   int progressive(const walk::RandomWalk& walker, const std::vector<WalkStart>& starts,
-                  const SceneDescription& scene, std::vector<PointEstimate>& est,
+                  const SceneDescription& scene, std::vector<util::SampleMean>& est,
                   walk::RandomWalkStats& total, int& pass) const {
     const int spp = int(mKnobs.integer("spp"));
     const double target = mKnobs.real("target-error");
@@ -144,18 +130,16 @@ class RandomWalking final : public Prepared {
   }
 
   static void runPass(const walk::RandomWalk& walker, const std::vector<WalkStart>& starts,
-                      const SceneDescription& scene, std::vector<PointEstimate>& est,
+                      const SceneDescription& scene, std::vector<util::SampleMean>& est,
                       walk::RandomWalkStats& total, std::uint64_t seed, int pass, int count) {
     std::mutex statsMutex;
     scene.parallelFor(starts.size(), [&](std::size_t begin, std::size_t end) {
       walk::RandomWalkStats local;
       for (std::size_t i = begin; i < end; ++i) {
         util::Rng rng((seed * 1000003ULL + i) * 65537ULL + std::uint64_t(pass));
-        for (int k = 0; k < count; ++k) {
-          const glm::dvec3 l =
-              walker.sample(starts[i].point, starts[i].triangle, starts[i].direction, rng, local);
-          est[i].sum += l, est[i].sumSq += l * l, ++est[i].n;
-        }
+        for (int k = 0; k < count; ++k)
+          est[i].add(
+              walker.sample(starts[i].point, starts[i].triangle, starts[i].direction, rng, local));
       }
       const std::lock_guard<std::mutex> lock(statsMutex);
       total.add(local);
